@@ -1,0 +1,37 @@
+#ifndef OMPL_PARC_DEMOS_TOOL_SUPPORT_
+#define OMPL_PARC_DEMOS_TOOL_SUPPORT_
+
+#include "ompl_parc/MultiRobotProblem.h"
+
+#include <boost/program_options.hpp>
+
+#include <functional>
+#include <string>
+
+namespace ompl_parc::tools
+{
+    /** \brief Exit codes shared by the command-line tools. */
+    enum ExitCode
+    {
+        EXIT_SOLVED = 0,
+        EXIT_FAILED = 1,
+        EXIT_BAD_INPUT = 2
+    };
+
+    /** \brief Adds --scenario and --robots to \e options. */
+    void addProblemOptions(boost::program_options::options_description &options);
+
+    /** \brief Builds the problem named by --scenario/--robots and checks its starts and goals; throws
+        std::invalid_argument with a one-line reason on bad input. */
+    MultiRobotProblem problemFromOptions(const boost::program_options::variables_map &vm);
+
+    /** \brief Parses \e argc/\e argv into a variables map (throws on unknown or malformed options). */
+    boost::program_options::variables_map parse(
+        int argc, char **argv, const boost::program_options::options_description &options,
+        const boost::program_options::positional_options_description &positional = {});
+
+    /** \brief Runs \e body, turning any exception into a one-line "tool: reason" on stderr and exit code 2. */
+    int runTool(const std::string &tool, const std::function<int()> &body);
+}  // namespace ompl_parc::tools
+
+#endif

@@ -1,0 +1,50 @@
+/* ompl_parc_validate: re-check a solution file against a problem with the independent validator.
+   Exit 0: valid; 1: invalid (the first violation is printed); 2: bad input (one-line reason). */
+#include "ToolSupport.h"
+
+#include "ompl_parc/SolutionFile.h"
+#include "ompl_parc/SolutionValidator.h"
+
+#include <iostream>
+
+namespace po = boost::program_options;
+using namespace ompl_parc;
+
+int main(int argc, char **argv)
+{
+    return tools::runTool(
+        "ompl_parc_validate",
+        [&]
+        {
+            po::options_description options("Usage: ompl_parc_validate [options] SOLUTION.json\nOptions");
+            tools::addProblemOptions(options);
+            options.add_options()("substeps", po::value<unsigned int>()->default_value(4),
+                                  "samples per timestep interval")("solution", po::value<std::string>(),
+                                                                   "solution file")("help,h", "show this help");
+            po::positional_options_description positional;
+            positional.add("solution", 1);
+            const auto vm = tools::parse(argc, argv, options, positional);
+            if (vm.count("help"))
+            {
+                std::cout << options << std::endl;
+                return static_cast<int>(tools::EXIT_SOLVED);
+            }
+            if (!vm.count("solution"))
+                throw std::invalid_argument("no solution file given (see --help)");
+            const MultiRobotProblem problem = tools::problemFromOptions(vm);
+            const MultiRobotPlan plan =
+                SolutionFile::read(vm["solution"].as<std::string>(), *problem.getSpaceInformation());
+            ValidationOptions validation;
+            validation.substeps = vm["substeps"].as<unsigned int>();
+            const ValidationReport report = SolutionValidator(problem, validation).validate(plan);
+            if (!report.valid)
+            {
+                std::cout << "invalid: " << report.message << std::endl;
+                return static_cast<int>(tools::EXIT_FAILED);
+            }
+            std::cout << "valid: " << plan.getRobotCount() << " robots, makespan " << plan.getMakespan()
+                      << " timesteps, sum of costs " << plan.getSumOfCosts() << ", " << report.configurationsChecked
+                      << " configurations checked" << std::endl;
+            return static_cast<int>(tools::EXIT_SOLVED);
+        });
+}

@@ -1,0 +1,43 @@
+#ifndef OMPL_PARC_COLLISION_BODY_
+#define OMPL_PARC_COLLISION_BODY_
+
+#include <cstddef>
+#include <vector>
+
+namespace ompl_parc
+{
+    /** \brief The shape of a robot at one configuration, as a set of capsules (sphere-swept segments).
+
+        A sphere is a capsule whose two end points coincide, so discs, planar-arm links and sphere
+        models of 3D arms all share one representation and one robot-robot test. The data is stored
+        structure-of-arrays so that the pairwise distance loop in bodiesCollide() vectorises. 2D robots
+        use z = 0. A bounding sphere of the whole body gives a cheap early-out. */
+    class CollisionBody
+    {
+      public:
+        /** \brief Remove all capsules (keeps the allocated memory, so bodies can be reused in hot loops). */
+        void clear();
+
+        /** \brief Add the capsule from (ax, ay, az) to (bx, by, bz) with the given radius. */
+        void addCapsule(double ax, double ay, double az, double bx, double by, double bz, double radius);
+
+        /** \brief Add a sphere (a capsule of zero length). */
+        void addSphere(double x, double y, double z, double radius) { addCapsule(x, y, z, x, y, z, radius); }
+
+        /** \brief Recompute the bounding sphere; call after the last addCapsule(). */
+        void updateBound();
+
+        std::size_t size() const { return radius_.size(); }
+
+        /** \brief Capsule end points and radii, one array per coordinate. */
+        std::vector<double> ax_, ay_, az_, bx_, by_, bz_, radius_;
+
+        /** \brief True while every capsule is a sphere: the pair test then skips the segment math. */
+        bool spheresOnly_{true};
+
+        /** \brief Bounding sphere of all capsules. */
+        double centerX_{0.}, centerY_{0.}, centerZ_{0.}, boundRadius_{0.};
+    };
+}  // namespace ompl_parc
+
+#endif

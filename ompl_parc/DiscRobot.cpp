@@ -1,0 +1,20 @@
+#include "ompl_parc/DiscRobot.h"
+
+#include <ompl/util/Exception.h>
+
+ompl_parc::DiscRobot::DiscRobot(std::string name, EnvironmentPtr environment, double radius,
+                                const ompl::base::RealVectorBounds &bounds)
+    : Robot(std::move(name), std::move(environment), bounds), radius_(radius)
+{
+    if (!(radius > 0.))
+        throw ompl::Exception("DiscRobot", "robot '" + getName() + "' needs a positive radius");
+    if (getDimension() != 2)
+        throw ompl::Exception("DiscRobot", "robot '" + getName() + "' needs 2D bounds");
+}
+
+void ompl_parc::DiscRobot::computeBody(const double *q, CollisionBody &body) const
+{
+    body.clear();
+    body.addSphere(q[0], q[1], 0., radius_);
+    body.updateBound();
+}

@@ -1,0 +1,153 @@
+#include "ompl_parc/MultiRobotPlan.h"
+
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/util/Exception.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+namespace
+{
+    /** Number of timesteps a motion of length \e d takes at \e resolution (0 for no motion). */
+    std::size_t stepsFor(double d, double resolution)
+    {
+        return static_cast<std::size_t>(std::ceil(d * resolution - 1e-9));
+    }
+
+    /** Append to \e out the grid states of \e path over \e space, excluding the first state. */
+    template <typename Append>
+    void layOnGrid(const ob::StateSpacePtr &space, const og::PathGeometric &path, double resolution, Append append)
+    {
+        ob::State *tmp = space->allocState();
+        for (std::size_t k = 1; k < path.getStateCount(); ++k)
+        {
+            const ob::State *from = path.getState(k - 1), *to = path.getState(k);
+            const std::size_t steps = stepsFor(space->distance(from, to), resolution);
+            for (std::size_t s = 1; s <= steps; ++s)
+            {
+                if (s == steps)  // the waypoint itself, not a rounded interpolation of it
+                    space->copyState(tmp, to);
+                else
+                    space->interpolate(from, to, static_cast<double>(s) / static_cast<double>(steps), tmp);
+                append(tmp);
+            }
+        }
+        space->freeState(tmp);
+    }
+}  // namespace
+
+ompl_parc::MultiRobotPlan::MultiRobotPlan(std::vector<unsigned int> dimensions, double resolution)
+    : dimensions_(std::move(dimensions)), paths_(dimensions_.size()), resolution_(resolution)
+{
+    if (!(resolution > 0.))
+        throw ompl::Exception("MultiRobotPlan", "resolution must be positive");
+}
+
+ompl_parc::MultiRobotPlan::MultiRobotPlan(const MultiRobotSpaceInformation &si) : resolution_(si.getResolution())
+{
+    for (const auto &robot : si.getRobots())
+        dimensions_.push_back(robot->getDimension());
+    paths_.resize(dimensions_.size());
+}
+
+std::size_t ompl_parc::MultiRobotPlan::getArrival(std::size_t robot) const
+{
+    const std::size_t n = getStateCount(robot);
+    if (n == 0)
+        throw ompl::Exception("MultiRobotPlan", "robot " + std::to_string(robot) + " has no states");
+    return n - 1;
+}
+
+const double *ompl_parc::MultiRobotPlan::getConfig(std::size_t robot, std::size_t t) const
+{
+    return paths_[robot].data() + std::min(t, getArrival(robot)) * dimensions_[robot];
+}
+
+void ompl_parc::MultiRobotPlan::setRobotPath(std::size_t robot, std::vector<double> flat)
+{
+    if (flat.size() % dimensions_.at(robot) != 0)
+        throw ompl::Exception("MultiRobotPlan", "path size is not a multiple of the robot's dimension");
+    paths_[robot] = std::move(flat);
+}
+
+void ompl_parc::MultiRobotPlan::appendConfig(std::size_t robot, const double *q)
+{
+    paths_.at(robot).insert(paths_[robot].end(), q, q + dimensions_[robot]);
+}
+
+std::size_t ompl_parc::MultiRobotPlan::getMakespan() const
+{
+    std::size_t m = 0;
+    for (std::size_t i = 0; i < getRobotCount(); ++i)
+        m = std::max(m, getArrival(i));
+    return m;
+}
+
+std::size_t ompl_parc::MultiRobotPlan::getSumOfCosts() const
+{
+    std::size_t s = 0;
+    for (std::size_t i = 0; i < getRobotCount(); ++i)
+        s += getArrival(i);
+    return s;
+}
+
+og::PathGeometric ompl_parc::MultiRobotPlan::toPathGeometric(const MultiRobotSpaceInformationPtr &si) const
+{
+    if (si->getRobotCount() != getRobotCount())
+        throw ompl::Exception("MultiRobotPlan", "plan and space information have different team sizes");
+    og::PathGeometric path(si);
+    ob::State *state = si->allocState();
+    const std::size_t makespan = getMakespan();
+    for (std::size_t t = 0; t <= makespan; ++t)
+    {
+        for (std::size_t i = 0; i < getRobotCount(); ++i)
+            std::copy_n(getConfig(i, t), dimensions_[i], si->getRobotValues(state, i));
+        path.append(state);
+    }
+    si->freeState(state);
+    return path;
+}
+
+ompl_parc::MultiRobotPlan ompl_parc::MultiRobotPlan::fromPathGeometric(const MultiRobotSpaceInformation &si,
+                                                                       const og::PathGeometric &path)
+{
+    MultiRobotPlan plan(si);
+    if (path.getStateCount() == 0)
+        throw ompl::Exception("MultiRobotPlan", "cannot lay an empty path on the timestep grid");
+    const auto appendAll = [&](const ob::State *state)
+    {
+        for (std::size_t i = 0; i < si.getRobotCount(); ++i)
+            plan.appendConfig(i, si.getRobotValues(state, i));
+    };
+    appendAll(path.getState(0));
+    layOnGrid(si.getStateSpace(), path, si.getResolution(), appendAll);
+    // A robot arrives when it stops moving for good: drop its trailing copies of the final state.
+    for (std::size_t i = 0; i < si.getRobotCount(); ++i)
+    {
+        auto &p = plan.paths_[i];
+        const unsigned int d = plan.dimensions_[i];
+        while (p.size() > d && std::equal(p.end() - 2 * d, p.end() - d, p.end() - d))
+            p.resize(p.size() - d);
+    }
+    return plan;
+}
+
+std::vector<double> ompl_parc::MultiRobotPlan::discretize(const Robot &robot, const og::PathGeometric &path,
+                                                          double resolution)
+{
+    if (path.getStateCount() == 0)
+        throw ompl::Exception("MultiRobotPlan", "cannot lay an empty path on the timestep grid");
+    std::vector<double> flat(robot.getDimension());
+    robot.stateToConfig(path.getState(0), flat.data());
+    std::vector<double> q(robot.getDimension());
+    layOnGrid(robot.getStateSpace(), path, resolution,
+              [&](const ob::State *state)
+              {
+                  robot.stateToConfig(state, q.data());
+                  flat.insert(flat.end(), q.begin(), q.end());
+              });
+    return flat;
+}

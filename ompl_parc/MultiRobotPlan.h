@@ -1,0 +1,68 @@
+#ifndef OMPL_PARC_MULTI_ROBOT_PLAN_
+#define OMPL_PARC_MULTI_ROBOT_PLAN_
+
+#include "ompl_parc/MultiRobotSpaceInformation.h"
+
+#include <ompl/geometric/PathGeometric.h>
+
+#include <vector>
+
+namespace ompl_parc
+{
+    /** \brief Time-parameterised paths of a robot team: robot i's configuration at every integer timestep.
+
+        Timestep t of robot i is stored flat (getDimension(i) doubles each). A robot's last state is its
+        arrival; from then on it holds that state, so getConfig(i, t) is defined for every t >= 0. One
+        timestep moves a robot at most 1/resolution in its space's distance (vmax = 1). */
+    class MultiRobotPlan
+    {
+      public:
+        MultiRobotPlan() = default;
+        /** \brief An empty plan (no states yet) for a team with these configuration sizes. */
+        MultiRobotPlan(std::vector<unsigned int> dimensions, double resolution);
+        /** \brief An empty plan for the team of \e si, at its resolution. */
+        explicit MultiRobotPlan(const MultiRobotSpaceInformation &si);
+
+        std::size_t getRobotCount() const { return paths_.size(); }
+        unsigned int getDimension(std::size_t robot) const { return dimensions_.at(robot); }
+        double getResolution() const { return resolution_; }
+
+        /** \brief Number of timesteps stored for \e robot (its arrival + 1). */
+        std::size_t getStateCount(std::size_t robot) const { return paths_.at(robot).size() / dimensions_.at(robot); }
+        /** \brief Timestep at which \e robot reaches its last state. Requires at least one state. */
+        std::size_t getArrival(std::size_t robot) const;
+
+        /** \brief Robot \e robot's configuration at timestep \e t (its last state once arrived). */
+        const double *getConfig(std::size_t robot, std::size_t t) const;
+
+        const std::vector<double> &getRobotPath(std::size_t robot) const { return paths_.at(robot); }
+        /** \brief Replace a robot's path by \e flat (getDimension(robot) values per timestep). */
+        void setRobotPath(std::size_t robot, std::vector<double> flat);
+        void appendConfig(std::size_t robot, const double *q);
+
+        /** \brief Largest arrival timestep over the team. */
+        std::size_t getMakespan() const;
+        /** \brief Sum of the robots' arrival timesteps. */
+        std::size_t getSumOfCosts() const;
+
+        /** \brief One composite state per timestep 0..makespan. */
+        ompl::geometric::PathGeometric toPathGeometric(const MultiRobotSpaceInformationPtr &si) const;
+
+        /** \brief Lay a composite path on the timestep grid: each segment takes ceil(length x resolution)
+            timesteps with all robots moving synchronised; trailing states at a robot's goal are dropped so
+            its arrival is when it stops moving. */
+        static MultiRobotPlan fromPathGeometric(const MultiRobotSpaceInformation &si,
+                                                const ompl::geometric::PathGeometric &path);
+
+        /** \brief Lay a single-robot path (over \e robot's own space) on the grid, as above. */
+        static std::vector<double> discretize(const Robot &robot, const ompl::geometric::PathGeometric &path,
+                                              double resolution);
+
+      private:
+        std::vector<unsigned int> dimensions_;
+        std::vector<std::vector<double>> paths_;
+        double resolution_{128.};
+    };
+}  // namespace ompl_parc
+
+#endif

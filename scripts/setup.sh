@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs every Debian package ompl_parc needs to build, test and run its demos.
+# Idempotent: when all packages are present it only checks (well under a second).
+set -euo pipefail
+
+PACKAGES=(
+    build-essential cmake pkg-config
+    libompl-dev libfcl-dev libccd-dev liburdfdom-dev libeigen3-dev
+    libboost-dev libboost-program-options-dev libboost-serialization-dev
+    libboost-filesystem-dev libboost-system-dev
+    nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+        missing+=("$p")
+    fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+    echo "setup: all ${#PACKAGES[@]} packages present"
+    exit 0
+fi
+
+echo "setup: installing ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "setup: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+    SUDO="sudo"
+fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+echo "setup: done"

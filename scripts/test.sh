@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# One command from a fresh clone: install dependencies, build, run the whole test suite, then build
+# and run it again under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/).
+# OMPL_PARC_SKIP_SANITIZERS=1 skips the sanitizer pass (for quick local iterations only; CI runs it).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+bash scripts/build.sh build
+ctest --test-dir build --output-on-failure -j"$(nproc)"
+if [ "${OMPL_PARC_SKIP_SANITIZERS:-0}" != "1" ]; then
+    echo "== sanitizer pass: ASan + UBSan =="
+    bash scripts/build.sh build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOMPL_PARC_SANITIZE="address;undefined" \
+        -DOMPL_PARC_BUILD_BENCHMARKS=OFF
+    ctest --test-dir build-asan --output-on-failure -j"$(nproc)"
+fi

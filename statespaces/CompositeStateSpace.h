@@ -1,0 +1,54 @@
+#ifndef OMPL_PARC_STATESPACES_COMPOSITE_STATE_SPACE_
+#define OMPL_PARC_STATESPACES_COMPOSITE_STATE_SPACE_
+
+#include <ompl/base/StateSpace.h>
+
+#include <memory>
+#include <vector>
+
+namespace ompl_parc
+{
+    class CompositeStateSpace;
+    using CompositeStateSpacePtr = std::shared_ptr<CompositeStateSpace>;
+
+    /** \brief The composite configuration space of a robot team: one component per robot, in robot order.
+
+        Its distance is the \b maximum of the robots' distances (not OMPL's weighted sum), so a composite
+        motion of length d moves no robot further than d. That makes composite paths and the timestep
+        grid agree: one composite step of length <= 1/resolution is one legal timestep for every robot.
+        Interpolation is OMPL's component-wise one, so all robots move synchronised. Motion checking
+        inherits OMPL's compound rule (the most segments any robot space asks for), so each robot is
+        checked at its own space's resolution; do not call setLongestValidSegmentFraction() on a
+        composite space, as OMPL would push that value down into the shared robot spaces. */
+    class CompositeStateSpace : public ompl::base::CompoundStateSpace
+    {
+      public:
+        /** \brief One component per robot space; throws ompl::Exception if \e robotSpaces is empty. */
+        explicit CompositeStateSpace(const std::vector<ompl::base::StateSpacePtr> &robotSpaces);
+
+        std::size_t getRobotCount() const { return getSubspaceCount(); }
+        const ompl::base::StateSpacePtr &getRobotSpace(std::size_t robot) const
+        {
+            return getSubspace(static_cast<unsigned int>(robot));
+        }
+
+        /** \brief The composite space of a subset of the robots (same robot space objects, given order). */
+        CompositeStateSpacePtr createSubspace(const std::vector<std::size_t> &robots) const;
+
+        /** \brief Copy the components of \e robots from \e state into the sub-composite state \e sub. */
+        void splitState(const ompl::base::State *state, const std::vector<std::size_t> &robots,
+                        ompl::base::State *sub) const;
+
+        /** \brief Copy the sub-composite state \e sub back into the components of \e robots of \e state. */
+        void joinState(ompl::base::State *state, const std::vector<std::size_t> &robots,
+                       const ompl::base::State *sub) const;
+
+        double distance(const ompl::base::State *state1, const ompl::base::State *state2) const override;
+        double getMaximumExtent() const override;
+
+      private:
+        void checkRobots(const std::vector<std::size_t> &robots) const;
+    };
+}  // namespace ompl_parc
+
+#endif

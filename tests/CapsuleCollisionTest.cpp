@@ -1,0 +1,145 @@
+#include "ompl_parc/CapsuleCollision.h"
+
+#include <fcl/geometry/shape/capsule.h>
+#include <fcl/geometry/shape/sphere.h>
+#include <fcl/narrowphase/distance.h>
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace ompl_parc;
+
+namespace
+{
+    /** Brute-force squared segment distance by dense sampling of both segments. */
+    double sampledDistanceSquared(const CollisionBody &a, const CollisionBody &b)
+    {
+        double best = 1e300;
+        const int n = 400;
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; j <= n; ++j)
+            {
+                const double s = double(i) / n, t = double(j) / n;
+                const double dx = a.ax_[0] + s * (a.bx_[0] - a.ax_[0]) - b.ax_[0] - t * (b.bx_[0] - b.ax_[0]);
+                const double dy = a.ay_[0] + s * (a.by_[0] - a.ay_[0]) - b.ay_[0] - t * (b.by_[0] - b.ay_[0]);
+                const double dz = a.az_[0] + s * (a.bz_[0] - a.az_[0]) - b.az_[0] - t * (b.bz_[0] - b.az_[0]);
+                best = std::min(best, dx * dx + dy * dy + dz * dz);
+            }
+        return best;
+    }
+
+    CollisionBody capsule(double ax, double ay, double az, double bx, double by, double bz, double r)
+    {
+        CollisionBody body;
+        body.addCapsule(ax, ay, az, bx, by, bz, r);
+        body.updateBound();
+        return body;
+    }
+}  // namespace
+
+TEST(CapsuleCollision, SegmentDistanceMatchesDenseSampling)
+{
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-1., 1.);
+    for (int k = 0; k < 200; ++k)
+    {
+        // Every fifth pair is degenerate (a point), every seventh parallel.
+        const auto a = capsule(u(rng), u(rng), u(rng), u(rng), u(rng), u(rng), 0.1);
+        CollisionBody b = capsule(u(rng), u(rng), u(rng), u(rng), u(rng), u(rng), 0.1);
+        if (k % 5 == 0)
+        {
+            b.bx_[0] = b.ax_[0];
+            b.by_[0] = b.ay_[0];
+            b.bz_[0] = b.az_[0];
+        }
+        if (k % 7 == 0)
+        {
+            b.bx_[0] = b.ax_[0] + (a.bx_[0] - a.ax_[0]);
+            b.by_[0] = b.ay_[0] + (a.by_[0] - a.ay_[0]);
+            b.bz_[0] = b.az_[0] + (a.bz_[0] - a.az_[0]);
+        }
+        const double exact = segmentDistanceSquared(a, 0, b, 0);
+        const double sampled = sampledDistanceSquared(a, b);
+        EXPECT_LE(exact, sampled + 1e-12) << "pair " << k;
+        EXPECT_NEAR(std::sqrt(exact), std::sqrt(sampled), 1e-2) << "pair " << k;
+    }
+}
+
+TEST(CapsuleCollision, SpheresTouchExactlyAtSumOfRadii)
+{
+    CollisionBody a, b;
+    a.addSphere(0, 0, 0, 0.5);
+    a.updateBound();
+    b.addSphere(1.0 + 1e-9, 0, 0, 0.5);
+    b.updateBound();
+    EXPECT_FALSE(bodiesCollide(a, b));
+    b.clear();
+    b.addSphere(1.0 - 1e-9, 0, 0, 0.5);
+    b.updateBound();
+    EXPECT_TRUE(bodiesCollide(a, b));
+}
+
+TEST(CapsuleCollision, CrossingCapsulesCollideAndParallelOnesDoNot)
+{
+    EXPECT_TRUE(bodiesCollide(capsule(-1, 0, 0, 1, 0, 0, 0.05), capsule(0, -1, 0, 0, 1, 0, 0.05)));
+    EXPECT_FALSE(bodiesCollide(capsule(-1, 0, 0, 1, 0, 0, 0.05), capsule(-1, 0.11, 0, 1, 0.11, 0, 0.05)));
+    EXPECT_TRUE(bodiesCollide(capsule(-1, 0, 0, 1, 0, 0, 0.05), capsule(-1, 0.09, 0, 1, 0.09, 0, 0.05)));
+}
+
+TEST(CapsuleCollision, BodyTestAgreesWithPairwiseCapsuleTest)
+{
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1., 1.), r(0.02, 0.2);
+    int collisions = 0;
+    for (int k = 0; k < 2000; ++k)
+    {
+        CollisionBody a, b;
+        for (int c = 0; c < 3; ++c)
+        {
+            a.addCapsule(u(rng), u(rng), u(rng), u(rng), u(rng), u(rng), r(rng));
+            b.addCapsule(u(rng) + 1., u(rng), u(rng), u(rng) + 1., u(rng), u(rng), r(rng));
+        }
+        a.updateBound();
+        b.updateBound();
+        // Reference: the closest capsule pair, one pair at a time (no early-outs, no vector loop).
+        double pairMin = 1e300;
+        for (std::size_t i = 0; i < 3; ++i)
+            for (std::size_t j = 0; j < 3; ++j)
+            {
+                const double rr = a.radius_[i] + b.radius_[j];
+                pairMin = std::min(pairMin, std::sqrt(segmentDistanceSquared(a, i, b, j)) - rr);
+            }
+        const bool ours = bodiesCollide(a, b);
+        if (std::abs(pairMin) > 1e-9)
+            EXPECT_EQ(ours, pairMin < 0.) << "body pair " << k;
+        collisions += ours;
+    }
+    EXPECT_GT(collisions, 100);
+    EXPECT_LT(collisions, 1900);
+}
+
+TEST(CapsuleCollision, SegmentDistanceMatchesFclDistance)
+{
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(-1., 1.);
+    for (int k = 0; k < 300; ++k)
+    {
+        const Eigen::Vector3d p1(u(rng), u(rng), u(rng)), q1(u(rng), u(rng), u(rng));
+        const Eigen::Vector3d p2(u(rng) + 2., u(rng), u(rng)), q2(u(rng) + 2., u(rng), u(rng));
+        const auto a = capsule(p1.x(), p1.y(), p1.z(), q1.x(), q1.y(), q1.z(), 0.1);
+        const auto b = capsule(p2.x(), p2.y(), p2.z(), q2.x(), q2.y(), q2.z(), 0.1);
+        auto place = [](const Eigen::Vector3d &p, const Eigen::Vector3d &q)
+        {
+            fcl::Transform3d tf = fcl::Transform3d::Identity();
+            tf.translation() = 0.5 * (p + q);
+            tf.linear() = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), q - p).toRotationMatrix();
+            return tf;
+        };
+        const fcl::Capsuled ca(0.1, (q1 - p1).norm()), cb(0.1, (q2 - p2).norm());
+        fcl::DistanceRequestd request;
+        fcl::DistanceResultd result;
+        fcl::distance(&ca, place(p1, q1), &cb, place(p2, q2), request, result);
+        if (result.min_distance > 1e-6)
+            EXPECT_NEAR(std::sqrt(segmentDistanceSquared(a, 0, b, 0)) - 0.2, result.min_distance, 1e-4) << k;
+    }
+}

@@ -1,0 +1,132 @@
+#include "TestProblems.h"
+
+#include "ompl_parc/DiscRobot.h"
+#include "ompl_parc/SolutionValidator.h"
+#include "ompl_parc/scenarios/Scenarios.h"
+
+#include <gtest/gtest.h>
+#include <ompl/base/ScopedState.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/geometric/planners/rrt/RRTConnect.h>
+#include <ompl/util/Exception.h>
+
+using namespace ompl_parc;
+namespace ob = ompl::base;
+
+TEST(MultiRobotSpaceInformation, ValidityCheckerChecksRobotsAndPairs)
+{
+    const auto problem = test::twoDiscs({-5, 0}, {5, 0}, {5, 0}, {-5, 0}, true);
+    const auto &si = problem.getSpaceInformation();
+    ob::ScopedState<> state(si);
+    auto set = [&](double ax, double ay, double bx, double by)
+    {
+        state[0] = ax;
+        state[1] = ay;
+        state[2] = bx;
+        state[3] = by;
+    };
+    set(-5, 0, 5, 0);
+    EXPECT_TRUE(si->isValid(state.get()));
+    set(-5, 0, -4.2, 0);  // 0.8 apart: discs of radius 0.5 overlap
+    EXPECT_FALSE(si->isValid(state.get()));
+    EXPECT_EQ(si->explainInvalid(state.get()), "robots 'a' and 'b' collide");
+    set(0, 0, 5, 0);  // a inside the wall
+    EXPECT_FALSE(si->isValid(state.get()));
+    EXPECT_EQ(si->explainInvalid(state.get()), "robot 'a' is in collision with the environment");
+    set(-5, 0, 11, 0);
+    EXPECT_EQ(si->explainInvalid(state.get()), "robot 'b' is out of bounds");
+}
+
+TEST(MultiRobotSpaceInformation, MotionsAreCheckedOncePerTimestep)
+{
+    const auto problem = test::twoDiscs({-5, 0}, {5, 0}, {5, 0}, {-5, 0}, false, 10.);
+    const auto &si = problem.getSpaceInformation();
+    ob::ScopedState<> a(si), b(si);
+    a[0] = -5;
+    a[1] = 0;
+    a[2] = 5;
+    a[3] = 0;
+    b = a;
+    b[0] = -3;  // robot a moves 2 units: 20 timesteps at resolution 10
+    EXPECT_EQ(si->getStateSpace()->validSegmentCount(a.get(), b.get()), 20u);
+}
+
+TEST(MultiRobotSpaceInformation, RejectsBadTeams)
+{
+    ob::RealVectorBounds bounds(2);
+    bounds.setLow(-1);
+    bounds.setHigh(1);
+    auto env = std::make_shared<Environment>();
+    auto a = std::make_shared<DiscRobot>("a", env, 0.1, bounds);
+    auto a2 = std::make_shared<DiscRobot>("a", env, 0.1, bounds);
+    auto other = std::make_shared<DiscRobot>("o", std::make_shared<Environment>(), 0.1, bounds);
+    EXPECT_THROW(MultiRobotSpaceInformation({}), ompl::Exception);
+    EXPECT_THROW(MultiRobotSpaceInformation({a, nullptr}), ompl::Exception);
+    EXPECT_THROW(MultiRobotSpaceInformation({a, a2}), ompl::Exception);
+    EXPECT_THROW(MultiRobotSpaceInformation({a, other}), ompl::Exception);
+    EXPECT_THROW(MultiRobotSpaceInformation({a}, 0.), ompl::Exception);
+}
+
+TEST(MultiRobotSpaceInformation, PlainSpaceInformationIsRejectedWithAClearError)
+{
+    auto plain = std::make_shared<ob::SpaceInformation>(std::make_shared<ob::RealVectorStateSpace>(2));
+    try
+    {
+        MultiRobotSpaceInformation::get(plain, "ARC");
+        FAIL() << "expected ompl::Exception";
+    }
+    catch (const ompl::Exception &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("MultiRobotSpaceInformation"), std::string::npos);
+    }
+    const auto problem = scenarios::createMobileCross(4);
+    EXPECT_EQ(MultiRobotSpaceInformation::get(problem.getSpaceInformation(), "ARC"), problem.getSpaceInformation());
+}
+
+TEST(MultiRobotProblem, RejectsMismatchedStartsAndGoals)
+{
+    const auto problem = scenarios::createMobileCross(4);
+    const auto &si = problem.getSpaceInformation();
+    std::vector<std::vector<double>> three(3, {0., 0.}), four(4, {0., 0.}), badSize = four;
+    badSize[2] = {0.};
+    EXPECT_THROW(MultiRobotProblem(si, three, four), ompl::Exception);
+    EXPECT_THROW(MultiRobotProblem(si, four, three), ompl::Exception);
+    EXPECT_THROW(MultiRobotProblem(si, badSize, four), ompl::Exception);
+    EXPECT_THROW(MultiRobotProblem(nullptr, four, four), ompl::Exception);
+}
+
+TEST(MultiRobotProblem, CheckEndpointsNamesTheProblem)
+{
+    EXPECT_EQ(test::twoDiscs({-5, 0}, {5, 0}, {5, 3}, {-5, 3}).checkEndpoints(), "");
+    EXPECT_EQ(test::twoDiscs({-11, 0}, {5, 0}, {5, 3}, {-5, 3}).checkEndpoints(),
+              "start of robot 'a' is out of bounds");
+    EXPECT_EQ(test::twoDiscs({-5, 0}, {0, 0}, {5, 3}, {-5, 3}, true).checkEndpoints(),
+              "goal of robot 'a' is in collision with the environment");
+    EXPECT_EQ(test::twoDiscs({-5, 0}, {5, 0}, {-5, 0.5}, {-5, 3}).checkEndpoints(),
+              "starts of robots 'a' and 'b' collide");
+}
+
+/* The point of the composite model: OMPL's own planners run on it unchanged. */
+class OmplOnComposite : public testing::TestWithParam<std::pair<std::string, std::size_t>>
+{
+};
+
+TEST_P(OmplOnComposite, RRTConnectSolvesUnchangedAndTheResultValidates)
+{
+    const auto problem = scenarios::createScenario(GetParam().first, GetParam().second);
+    auto pdef = problem.createProblemDefinition();
+    ompl::geometric::RRTConnect planner(problem.getSpaceInformation());
+    planner.setProblemDefinition(pdef);
+    planner.setup();
+    ASSERT_EQ(planner.solve(ob::timedPlannerTerminationCondition(60.)), ob::PlannerStatus::EXACT_SOLUTION);
+    auto *path = pdef->getSolutionPath()->as<ompl::geometric::PathGeometric>();
+    EXPECT_TRUE(path->check());
+    const auto report =
+        SolutionValidator(problem).validate(MultiRobotPlan::fromPathGeometric(*problem.getSpaceInformation(), *path));
+    EXPECT_TRUE(report.valid) << report.message;
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenarios, OmplOnComposite,
+                         testing::Values(std::make_pair("mobile_cross", 4), std::make_pair("mobile_circle", 4),
+                                         std::make_pair("planar_cross", 4)),
+                         [](const auto &info) { return info.param.first + std::to_string(info.param.second); });

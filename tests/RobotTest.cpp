@@ -1,0 +1,123 @@
+#include "ompl_parc/DiscRobot.h"
+#include "ompl_parc/PlanarArm.h"
+
+#include <gtest/gtest.h>
+#include <ompl/util/Exception.h>
+
+#include <cmath>
+
+using namespace ompl_parc;
+
+namespace
+{
+    ompl::base::RealVectorBounds box(unsigned int dim, double lo, double hi)
+    {
+        ompl::base::RealVectorBounds b(dim);
+        b.setLow(lo);
+        b.setHigh(hi);
+        return b;
+    }
+}  // namespace
+
+TEST(DiscRobot, ValidityAgainstBoundsAndEnvironment)
+{
+    auto env = std::make_shared<Environment>();
+    env->addBox2D("block", 3., 0., 1., 1.);
+    DiscRobot disc("d", env, 0.5, box(2, -5., 5.));
+    const double free[2] = {0., 0.}, outside[2] = {6., 0.}, hit[2] = {2.1, 0.}, grazing[2] = {1.99, 0.};
+    EXPECT_EQ(disc.checkValidity(free), Robot::Validity::VALID);
+    EXPECT_EQ(disc.checkValidity(outside), Robot::Validity::OUT_OF_BOUNDS);
+    EXPECT_EQ(disc.checkValidity(hit), Robot::Validity::ENVIRONMENT_COLLISION);
+    EXPECT_EQ(disc.checkValidity(grazing), Robot::Validity::VALID);
+    EXPECT_EQ(disc.getKind(), "disc");
+}
+
+TEST(DiscRobot, OwnSpaceInformationUsesTheValidityCheck)
+{
+    auto env = std::make_shared<Environment>();
+    env->addBox2D("block", 0., 0., 1., 1.);
+    DiscRobot disc("d", env, 0.5, box(2, -5., 5.));
+    auto si = disc.getSpaceInformation();
+    auto *s = si->allocState();
+    const double inside[2] = {0.2, 0.};
+    disc.configToState(inside, s);
+    EXPECT_FALSE(si->isValid(s));
+    const double away[2] = {-3., 3.};
+    disc.configToState(away, s);
+    EXPECT_TRUE(si->isValid(s));
+    si->freeState(s);
+}
+
+TEST(DiscRobot, RejectsBadParameters)
+{
+    EXPECT_THROW(DiscRobot("d", nullptr, 0., box(2, -1., 1.)), ompl::Exception);
+    EXPECT_THROW(DiscRobot("d", nullptr, 0.5, box(3, -1., 1.)), ompl::Exception);
+    EXPECT_THROW(DiscRobot("d", nullptr, 0.5, box(2, 1., -1.)), ompl::Exception);
+}
+
+TEST(PlanarArm, ForwardKinematicsMatchesHandComputedPose)
+{
+    PlanarArm arm("a", nullptr, 1., 2., M_PI / 2., {1.0, 0.5, 0.25}, 0.1, box(3, -M_PI, M_PI));
+    const double q[3] = {0., M_PI / 2., -M_PI / 2.};
+    CollisionBody body;
+    arm.computeBody(q, body);
+    ASSERT_EQ(body.size(), 3u);
+    // Link 0 points up from (1,2) to (1,3); link 1 turns left to (0.5,3); link 2 points up again to (0.5,3.25).
+    EXPECT_NEAR(body.bx_[0], 1., 1e-12);
+    EXPECT_NEAR(body.by_[0], 3., 1e-12);
+    EXPECT_NEAR(body.bx_[1], 0.5, 1e-12);
+    EXPECT_NEAR(body.by_[1], 3., 1e-12);
+    EXPECT_NEAR(body.bx_[2], 0.5, 1e-12);
+    EXPECT_NEAR(body.by_[2], 3.25, 1e-12);
+    EXPECT_DOUBLE_EQ(body.radius_[2], 0.05);
+}
+
+TEST(PlanarArm, DetectsSelfCollisionOfNonAdjacentLinksOnly)
+{
+    PlanarArm arm("a", nullptr, 0., 0., 0., {1.0, 0.3, 1.0}, 0.1, box(3, -M_PI, M_PI));
+    ASSERT_EQ(arm.getSelfCollisionPairs().size(), 1u);
+    const double straight[3] = {0., 0., 0.}, folded[3] = {0., 2.9, 0.3};
+    EXPECT_EQ(arm.checkValidity(straight), Robot::Validity::VALID);
+    EXPECT_EQ(arm.checkValidity(folded), Robot::Validity::SELF_COLLISION);
+}
+
+TEST(PlanarArm, RejectsBadParameters)
+{
+    EXPECT_THROW(PlanarArm("a", nullptr, 0., 0., 0., {1.0, 1.0}, 0.1, box(3, -1., 1.)), ompl::Exception);
+    EXPECT_THROW(PlanarArm("a", nullptr, 0., 0., 0., {1.0, -1.0, 1.0}, 0.1, box(3, -1., 1.)), ompl::Exception);
+    EXPECT_THROW(PlanarArm("a", nullptr, 0., 0., 0., {1.0, 1.0, 1.0}, 0., box(3, -1., 1.)), ompl::Exception);
+}
+
+TEST(Environment, RejectsNonPositiveSizes)
+{
+    Environment env;
+    EXPECT_THROW(env.addBox2D("flat", 0., 0., 0., 1.), ompl::Exception);
+    Obstacle sphere;
+    sphere.shape = Obstacle::Shape::SPHERE;
+    EXPECT_THROW(env.addObstacle(sphere), ompl::Exception);
+}
+
+TEST(Environment, CapsulesAgainstRotatedBoxAndSphere)
+{
+    Environment env;
+    env.addBox2D("diamond", 0., 0., 1., 1., M_PI / 4.);
+    Obstacle ball;
+    ball.name = "ball";
+    ball.shape = Obstacle::Shape::SPHERE;
+    ball.size.x() = 0.5;
+    ball.pose.translation() = Eigen::Vector3d(5., 0., 0.);
+    env.addObstacle(ball);
+    CollisionBody body;
+    // The diamond's corner is at x = sqrt(0.5) = 0.707; a thin capsule at x = 0.75 misses it, at 0.65 hits.
+    body.addCapsule(0.75, -1., 0., 0.75, 1., 0., 0.01);
+    EXPECT_FALSE(env.collides(body));
+    body.clear();
+    body.addCapsule(0.65, -1., 0., 0.65, 1., 0., 0.01);
+    EXPECT_TRUE(env.collides(body));
+    body.clear();
+    body.addSphere(5.9, 0., 0., 0.41);
+    EXPECT_TRUE(env.collides(body));
+    body.clear();
+    body.addSphere(5.9, 0., 0., 0.39);
+    EXPECT_FALSE(env.collides(body));
+}

@@ -1,0 +1,36 @@
+#include "TestProblems.h"
+
+#include "ompl_parc/DiscRobot.h"
+
+#include <cmath>
+
+ompl_parc::MultiRobotProblem ompl_parc::test::twoDiscs(std::vector<double> startA, std::vector<double> goalA,
+                                                       std::vector<double> startB, std::vector<double> goalB, bool wall,
+                                                       double resolution)
+{
+    auto env = std::make_shared<Environment>();
+    if (wall)
+        env->addBox2D("wall", 0., 0., 0.2, 4.);
+    ompl::base::RealVectorBounds bounds(2);
+    bounds.setLow(-10.);
+    bounds.setHigh(10.);
+    std::vector<RobotPtr> team = {std::make_shared<DiscRobot>("a", env, 0.5, bounds),
+                                  std::make_shared<DiscRobot>("b", env, 0.5, bounds)};
+    return MultiRobotProblem(std::make_shared<MultiRobotSpaceInformation>(team, resolution),
+                             {std::move(startA), std::move(startB)}, {std::move(goalA), std::move(goalB)}, "two_discs");
+}
+
+std::vector<double> ompl_parc::test::straightLine(const std::vector<double> &a, const std::vector<double> &b,
+                                                  double resolution)
+{
+    double d2 = 0.;
+    for (std::size_t k = 0; k < a.size(); ++k)
+        d2 += (b[k] - a[k]) * (b[k] - a[k]);
+    const auto steps = static_cast<std::size_t>(std::ceil(std::sqrt(d2) * resolution));
+    std::vector<double> flat(a);
+    for (std::size_t s = 1; s <= steps; ++s)
+        for (std::size_t k = 0; k < a.size(); ++k)
+            flat.push_back(s == steps ? b[k]
+                                      : a[k] + (b[k] - a[k]) * static_cast<double>(s) / static_cast<double>(steps));
+    return flat;
+}

@@ -1,0 +1,19 @@
+#ifndef OMPL_PARC_TESTS_TEST_PROBLEMS_
+#define OMPL_PARC_TESTS_TEST_PROBLEMS_
+
+#include "ompl_parc/MultiRobotPlan.h"
+#include "ompl_parc/MultiRobotProblem.h"
+
+#include <vector>
+
+namespace ompl_parc::test
+{
+    /** \brief Two discs (radius 0.5) in an empty 20 x 20 box, optionally with a wall box at the origin. */
+    MultiRobotProblem twoDiscs(std::vector<double> startA, std::vector<double> goalA, std::vector<double> startB,
+                               std::vector<double> goalB, bool wall = false, double resolution = 128.);
+
+    /** \brief Straight-line timestep plan of one robot from \e a to \e b (at most 1/resolution per step). */
+    std::vector<double> straightLine(const std::vector<double> &a, const std::vector<double> &b, double resolution);
+}  // namespace ompl_parc::test
+
+#endif

@@ -1,0 +1,129 @@
+/* Robot-robot pair checks per second: discs (Mobile Cross) and 3-link planar arms (Planar Cross).
+   "Bodies" benchmarks test precomputed bodies (the conflict scan's inner loop); "Configs" ones include
+   forward kinematics of both robots, as MultiRobotSpaceInformation::robotsCollide() does. The FCL
+   variant runs FCL's narrow phase on the same capsule pairs, for comparison. */
+#include "ompl_parc/CapsuleCollision.h"
+#include "ompl_parc/scenarios/Scenarios.h"
+
+#include <benchmark/benchmark.h>
+#include <fcl/geometry/shape/capsule.h>
+#include <fcl/narrowphase/collision.h>
+
+#include <random>
+
+using namespace ompl_parc;
+
+namespace
+{
+    constexpr std::size_t SAMPLES = 4096;
+
+    /** Random configurations of robots 0 and 1 of a scenario, all with overlapping bounding spheres, so
+        that the narrow phase runs on every pair (far-apart pairs would only measure the early-out). */
+    struct PairSet
+    {
+        MultiRobotProblem problem;
+        std::vector<std::vector<double>> qa, qb;
+        std::vector<CollisionBody> a, b;
+
+        explicit PairSet(const std::string &scenario) : problem(scenarios::createScenario(scenario, 2))
+        {
+            std::mt19937 rng(1);
+            const auto &si = *problem.getSpaceInformation();
+            CollisionBody ba, bb;
+            while (qa.size() < SAMPLES)
+            {
+                auto q0 = sample(*si.getRobot(0), rng), q1 = sample(*si.getRobot(1), rng);
+                if (scenario == "mobile_cross")  // bring discs within a few radii of each other
+                    for (int d = 0; d < 2; ++d)
+                        q1[d] = q0[d] + std::uniform_real_distribution<double>(-1.5, 1.5)(rng);
+                si.getRobot(0)->computeBody(q0.data(), ba);
+                si.getRobot(1)->computeBody(q1.data(), bb);
+                const double dx = ba.centerX_ - bb.centerX_, dy = ba.centerY_ - bb.centerY_;
+                if (std::hypot(dx, dy) >= ba.boundRadius_ + bb.boundRadius_)
+                    continue;
+                qa.push_back(q0);
+                qb.push_back(q1);
+                a.push_back(ba);
+                b.push_back(bb);
+            }
+        }
+
+        static std::vector<double> sample(const Robot &robot, std::mt19937 &rng)
+        {
+            std::vector<double> q(robot.getDimension());
+            for (unsigned int d = 0; d < q.size(); ++d)
+                q[d] = std::uniform_real_distribution<double>(robot.getBounds().low[d], robot.getBounds().high[d])(rng);
+            return q;
+        }
+    };
+
+    const PairSet &pairs(const std::string &scenario)
+    {
+        static const PairSet discs("mobile_cross"), arms("planar_cross");
+        return scenario == "mobile_cross" ? discs : arms;
+    }
+
+    void bodies(benchmark::State &state, const std::string &scenario)
+    {
+        const PairSet &set = pairs(scenario);
+        std::size_t k = 0, hits = 0;
+        for (auto _ : state)
+        {
+            hits += bodiesCollide(set.a[k], set.b[k]);
+            k = (k + 1) % SAMPLES;
+        }
+        state.SetItemsProcessed(state.iterations());
+        state.counters["collision_fraction"] = double(hits) / double(state.iterations());
+    }
+
+    void configs(benchmark::State &state, const std::string &scenario)
+    {
+        const PairSet &set = pairs(scenario);
+        const auto &si = *set.problem.getSpaceInformation();
+        std::size_t k = 0;
+        for (auto _ : state)
+        {
+            benchmark::DoNotOptimize(si.robotsCollide(0, set.qa[k].data(), 1, set.qb[k].data()));
+            k = (k + 1) % SAMPLES;
+        }
+        state.SetItemsProcessed(state.iterations());
+    }
+
+    void fclBodies(benchmark::State &state, const std::string &scenario)
+    {
+        const PairSet &set = pairs(scenario);
+        auto transform = [](const CollisionBody &b, std::size_t i)
+        {
+            const Eigen::Vector3d p(b.ax_[i], b.ay_[i], b.az_[i]), q(b.bx_[i], b.by_[i], b.bz_[i]);
+            fcl::Transform3d tf = fcl::Transform3d::Identity();
+            tf.translation() = 0.5 * (p + q);
+            if ((q - p).norm() > 0.)
+                tf.linear() = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), q - p).toRotationMatrix();
+            return std::make_pair(fcl::Capsuled(b.radius_[i], (q - p).norm()), tf);
+        };
+        std::size_t k = 0;
+        fcl::CollisionRequestd request;
+        for (auto _ : state)
+        {
+            bool hit = false;
+            for (std::size_t i = 0; i < set.a[k].size() && !hit; ++i)
+                for (std::size_t j = 0; j < set.b[k].size() && !hit; ++j)
+                {
+                    const auto [ca, ta] = transform(set.a[k], i);
+                    const auto [cb, tb] = transform(set.b[k], j);
+                    fcl::CollisionResultd result;
+                    hit = fcl::collide(&ca, ta, &cb, tb, request, result) > 0;
+                }
+            benchmark::DoNotOptimize(hit);
+            k = (k + 1) % SAMPLES;
+        }
+        state.SetItemsProcessed(state.iterations());
+    }
+}  // namespace
+
+BENCHMARK_CAPTURE(bodies, Disc, std::string("mobile_cross"));
+BENCHMARK_CAPTURE(bodies, PlanarArm3, std::string("planar_cross"));
+BENCHMARK_CAPTURE(configs, Disc, std::string("mobile_cross"));
+BENCHMARK_CAPTURE(configs, PlanarArm3, std::string("planar_cross"));
+BENCHMARK_CAPTURE(fclBodies, Disc, std::string("mobile_cross"));
+BENCHMARK_CAPTURE(fclBodies, PlanarArm3, std::string("planar_cross"));
