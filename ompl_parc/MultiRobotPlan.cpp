@@ -111,19 +111,30 @@ og::PathGeometric ompl_parc::MultiRobotPlan::toPathGeometric(const MultiRobotSpa
     return path;
 }
 
+std::vector<std::vector<double>> ompl_parc::MultiRobotPlan::layTeamPath(const MultiRobotSpaceInformation &si,
+                                                                        const og::PathGeometric &path)
+{
+    if (path.getStateCount() == 0)
+        throw ompl::Exception("MultiRobotPlan", "cannot lay an empty path on the timestep grid");
+    std::vector<std::vector<double>> paths(si.getRobotCount());
+    const auto appendAll = [&](const ob::State *state)
+    {
+        for (std::size_t i = 0; i < si.getRobotCount(); ++i)
+        {
+            const double *q = si.getRobotValues(state, i);
+            paths[i].insert(paths[i].end(), q, q + si.getRobot(i)->getDimension());
+        }
+    };
+    appendAll(path.getState(0));
+    layOnGrid(si.getStateSpace(), path, si.getResolution(), appendAll);
+    return paths;
+}
+
 ompl_parc::MultiRobotPlan ompl_parc::MultiRobotPlan::fromPathGeometric(const MultiRobotSpaceInformation &si,
                                                                        const og::PathGeometric &path)
 {
     MultiRobotPlan plan(si);
-    if (path.getStateCount() == 0)
-        throw ompl::Exception("MultiRobotPlan", "cannot lay an empty path on the timestep grid");
-    const auto appendAll = [&](const ob::State *state)
-    {
-        for (std::size_t i = 0; i < si.getRobotCount(); ++i)
-            plan.appendConfig(i, si.getRobotValues(state, i));
-    };
-    appendAll(path.getState(0));
-    layOnGrid(si.getStateSpace(), path, si.getResolution(), appendAll);
+    plan.paths_ = layTeamPath(si, path);
     // A robot arrives when it stops moving for good: drop its trailing copies of the final state.
     for (std::size_t i = 0; i < si.getRobotCount(); ++i)
     {

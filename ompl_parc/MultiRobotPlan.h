@@ -54,6 +54,11 @@ namespace ompl_parc
         static MultiRobotPlan fromPathGeometric(const MultiRobotSpaceInformation &si,
                                                 const ompl::geometric::PathGeometric &path);
 
+        /** \brief Lay a composite path of the team of \e si on the grid without trimming: every robot gets
+            the same number of timesteps (a synchronised patch for a subproblem). */
+        static std::vector<std::vector<double>> layTeamPath(const MultiRobotSpaceInformation &si,
+                                                            const ompl::geometric::PathGeometric &path);
+
         /** \brief Lay a single-robot path (over \e robot's own space) on the grid, as above. */
         static std::vector<double> discretize(const Robot &robot, const ompl::geometric::PathGeometric &path,
                                               double resolution);

@@ -2,6 +2,7 @@
 
 #include "ompl_parc/CapsuleCollision.h"
 #include "ompl_parc/MultiRobotValidityChecker.h"
+#include "ompl_parc/SeededRealVectorSampler.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/util/Exception.h>
@@ -12,11 +13,10 @@ namespace ob = ompl::base;
 
 namespace
 {
-    std::vector<ob::StateSpacePtr> robotSpaces(const std::vector<ompl_parc::RobotPtr> &robots)
+    void checkTeam(const std::vector<ompl_parc::RobotPtr> &robots)
     {
         if (robots.empty())
             throw ompl::Exception("MultiRobotSpaceInformation", "a team needs at least one robot");
-        std::vector<ob::StateSpacePtr> spaces;
         std::set<std::string> names;
         for (const auto &robot : robots)
         {
@@ -27,23 +27,54 @@ namespace
                                       "robot '" + robot->getName() + "' lives in another Environment than the team");
             if (!names.insert(robot->getName()).second)
                 throw ompl::Exception("MultiRobotSpaceInformation", "duplicate robot name '" + robot->getName() + "'");
-            spaces.push_back(robot->getStateSpace());
+        }
+    }
+
+    /** Fresh robot spaces: the given (or the robots' own) bounds, one motion check per timestep, and
+        samplers seeded from \e seed when it is non-zero. */
+    std::vector<ob::StateSpacePtr> robotSpaces(const std::vector<ompl_parc::RobotPtr> &robots, double resolution,
+                                               const std::vector<ob::RealVectorBounds> &bounds, std::uint_fast32_t seed)
+    {
+        checkTeam(robots);
+        if (!(resolution > 0.))
+            throw ompl::Exception("MultiRobotSpaceInformation", "resolution must be positive");
+        if (!bounds.empty() && bounds.size() != robots.size())
+            throw ompl::Exception("MultiRobotSpaceInformation", "need one bounds entry per robot");
+        std::vector<ob::StateSpacePtr> spaces;
+        for (std::size_t i = 0; i < robots.size(); ++i)
+        {
+            const auto &robot = *robots[i];
+            const ob::RealVectorBounds &b = bounds.empty() ? robot.getBounds() : bounds[i];
+            if (b.low.size() != robot.getDimension() || b.high.size() != robot.getDimension())
+                throw ompl::Exception("MultiRobotSpaceInformation",
+                                      "bounds of robot '" + robot.getName() + "' have the wrong dimension");
+            for (unsigned int d = 0; d < robot.getDimension(); ++d)
+                if (!(b.low[d] < b.high[d]))
+                    throw ompl::Exception(
+                        "MultiRobotSpaceInformation",
+                        "bounds of robot '" + robot.getName() + "' are empty in dimension " + std::to_string(d));
+            auto space = std::make_shared<ob::RealVectorStateSpace>(robot.getDimension());
+            space->setBounds(b);
+            space->setName(robot.getName());
+            space->setLongestValidSegmentFraction(std::min(0.5, 1. / (resolution * space->getMaximumExtent())));
+            if (seed != 0)
+                space->setStateSamplerAllocator(
+                    ompl_parc::SeededRealVectorSampler::allocator(ompl_parc::mixSeed(seed, i)));
+            spaces.push_back(space);
         }
         return spaces;
     }
 }  // namespace
 
-ompl_parc::MultiRobotSpaceInformation::MultiRobotSpaceInformation(std::vector<RobotPtr> robots, double resolution)
-    : ob::SpaceInformation(std::make_shared<CompositeStateSpace>(robotSpaces(robots))),
+ompl_parc::MultiRobotSpaceInformation::MultiRobotSpaceInformation(std::vector<RobotPtr> robots, double resolution,
+                                                                  const std::vector<ob::RealVectorBounds> &bounds,
+                                                                  std::uint_fast32_t seed)
+    : ob::SpaceInformation(std::make_shared<CompositeStateSpace>(robotSpaces(robots, resolution, bounds, seed))),
       robots_(std::move(robots)),
       composite_(std::static_pointer_cast<CompositeStateSpace>(getStateSpace())),
       resolution_(resolution)
 {
-    if (!(resolution > 0.))
-        throw ompl::Exception("MultiRobotSpaceInformation", "resolution must be positive");
-    for (const auto &robot : robots_)
-        robot->setResolution(resolution_);
-    setStateValidityChecker(std::make_shared<MultiRobotValidityChecker>(this));
+    setStateValidityChecker(std::make_shared<MultiRobotValidityChecker>(this, robots_));
     setup();
 }
 

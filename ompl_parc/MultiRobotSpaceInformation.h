@@ -5,7 +5,9 @@
 #include "ompl_parc/statespaces/CompositeStateSpace.h"
 
 #include <ompl/base/SpaceInformation.h>
+#include <ompl/base/spaces/RealVectorBounds.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,14 +22,21 @@ namespace ompl_parc
         Its validity checker accepts a composite state only if every robot is valid on its own and no two
         robots touch, so any OMPL planner run on it solves the coupled problem unchanged (the coupled
         baseline). Our planners additionally use the per-robot structure through get() and the robots.
-        The plan resolution (timesteps per unit of distance, vmax = 1) is pushed into every robot's
-        space, which also makes OMPL's motion checks sample each robot once per timestep. */
+
+        Each instance gets its own robot spaces (copies of the robots' bounds, or the tighter \e bounds a
+        subproblem asks for), so planning tasks never share mutable OMPL state and can run in parallel.
+        Every robot space checks motions every 1/resolution (one timestep at vmax = 1); with a non-zero
+        \e seed its samplers draw from that seed instead of OMPL's global sequence, so a task's result
+        depends only on its seed. */
     class MultiRobotSpaceInformation : public ompl::base::SpaceInformation
     {
       public:
-        /** \brief Throws ompl::Exception for an empty team, null or duplicate-named robots, robots in
-            different Environments, or a non-positive resolution. */
-        explicit MultiRobotSpaceInformation(std::vector<RobotPtr> robots, double resolution = 128.);
+        /** \brief \e bounds (one per robot, or empty for the robots' own) restrict sampling, e.g. to a
+            subproblem's local region. Throws ompl::Exception for an empty team, null or duplicate-named
+            robots, robots in different Environments, a non-positive resolution or malformed bounds. */
+        explicit MultiRobotSpaceInformation(std::vector<RobotPtr> robots, double resolution = 128.,
+                                            const std::vector<ompl::base::RealVectorBounds> &bounds = {},
+                                            std::uint_fast32_t seed = 0);
 
         std::size_t getRobotCount() const { return robots_.size(); }
         const RobotPtr &getRobot(std::size_t i) const { return robots_.at(i); }

@@ -1,24 +1,27 @@
 #ifndef OMPL_PARC_MULTI_ROBOT_VALIDITY_CHECKER_
 #define OMPL_PARC_MULTI_ROBOT_VALIDITY_CHECKER_
 
+#include "ompl_parc/Robot.h"
+
 #include <ompl/base/StateValidityChecker.h>
+
+#include <vector>
 
 namespace ompl_parc
 {
-    class MultiRobotSpaceInformation;
-
-    /** \brief Validity of a composite state: every robot valid alone, and every robot pair apart.
+    /** \brief Validity of a composite state (one real vector component per robot of \e team, in order):
+        every robot valid alone, and every robot pair apart.
 
         Bodies are computed once per robot per call (thread-local buffers, so the checker is safe to share
         between planner threads), then all pairs are tested with the bounding-sphere early-out. */
     class MultiRobotValidityChecker : public ompl::base::StateValidityChecker
     {
       public:
-        explicit MultiRobotValidityChecker(MultiRobotSpaceInformation *si);
+        MultiRobotValidityChecker(ompl::base::SpaceInformation *si, std::vector<RobotPtr> team);
         bool isValid(const ompl::base::State *state) const override;
 
       private:
-        const MultiRobotSpaceInformation *mrsi_;
+        std::vector<RobotPtr> team_;
     };
 }  // namespace ompl_parc
 

@@ -32,7 +32,7 @@ void ompl_parc::Robot::setResolution(double stepsPerUnit)
 {
     if (!(stepsPerUnit > 0.))
         throw ompl::Exception("Robot", "resolution must be positive");
-    const double fraction = std::min(1., 1. / (stepsPerUnit * getStateSpace()->getMaximumExtent()));
+    const double fraction = std::min(0.5, 1. / (stepsPerUnit * getStateSpace()->getMaximumExtent()));
     si_->setStateValidityCheckingResolution(fraction);
     si_->setup();
 }

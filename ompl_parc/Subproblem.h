@@ -1,0 +1,49 @@
+#ifndef OMPL_PARC_SUBPROBLEM_
+#define OMPL_PARC_SUBPROBLEM_
+
+#include <ompl/base/spaces/RealVectorBounds.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace ompl_parc
+{
+    class MultiRobotSpaceInformation;
+
+    /** \brief A locally coupled planning problem around a conflict: a team of robots, a window of the
+        current plan, each robot's local start and goal (its states at the window's ends) and local
+        sampling bounds. A SubproblemSolver answers it with a Patch. */
+    struct Subproblem
+    {
+        /** \brief The team, as indices into the problem's robots (increasing). */
+        std::vector<std::size_t> robots;
+        /** \brief The window [windowStart, windowEnd] of timesteps of the current plan the patch replaces. */
+        std::size_t windowStart{0}, windowEnd{0};
+        /** \brief Local start and goal of each team robot (same order as \e robots). */
+        std::vector<std::vector<double>> starts, goals;
+        /** \brief Local sampling bounds of each team robot; empty: each robot's whole space. */
+        std::vector<ompl::base::RealVectorBounds> bounds;
+        /** \brief Largest number of planner iterations; 0: no cap (the global problem). */
+        unsigned int sampleCap{0};
+
+        /** \brief Empty if the subproblem is well formed for the team of \e si, else the reason. */
+        std::string check(const MultiRobotSpaceInformation &si) const;
+    };
+
+    /** \brief A subproblem's answer: one path per team robot, all with the same number of timesteps,
+        from its local start (timestep 0) to its local goal (last timestep), one timestep at most
+        1/resolution, team collision-free at every timestep. Robots that arrive early wait at their goal. */
+    struct Patch
+    {
+        std::vector<std::vector<double>> paths;
+
+        /** \brief Number of timesteps the patch lasts (states - 1), given the first robot's dimension. */
+        std::size_t getDuration(unsigned int dimension) const
+        {
+            return paths.empty() ? 0 : paths.front().size() / dimension - 1;
+        }
+    };
+}  // namespace ompl_parc
+
+#endif
