@@ -1,23 +1,18 @@
 #include "ToolSupport.h"
 
+#include "ompl_parc/planners/ARC.h"
 #include "ompl_parc/scenarios/Scenarios.h"
+
+#include <ompl/geometric/planners/rrt/RRTConnect.h>
 
 #include <ompl/util/Console.h>
 
+#include <functional>
 #include <iostream>
+#include <map>
 #include <stdexcept>
 
 namespace po = boost::program_options;
-
-void ompl_parc::tools::addProblemOptions(po::options_description &options)
-{
-    std::string names;
-    for (const auto &n : scenarios::scenarioNames())
-        names += (names.empty() ? "" : ", ") + n;
-    options.add_options()("scenario", po::value<std::string>()->default_value("mobile_cross"),
-                          ("built-in scenario: " + names).c_str())("robots", po::value<std::size_t>()->default_value(4),
-                                                                   "number of robots");
-}
 
 ompl_parc::MultiRobotProblem ompl_parc::tools::problemFromOptions(const po::variables_map &vm)
 {
@@ -27,6 +22,70 @@ ompl_parc::MultiRobotProblem ompl_parc::tools::problemFromOptions(const po::vari
     if (!reason.empty())
         throw std::invalid_argument(reason);
     return problem;
+}
+
+namespace
+{
+    const std::map<std::string, ompl::base::PlannerAllocator> &planners()
+    {
+        static const std::map<std::string, ompl::base::PlannerAllocator> table = {
+            {"arc", [](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<ompl_parc::ARC>(si); }},
+            {"rrtconnect", [](const ompl::base::SpaceInformationPtr &si)
+             { return std::make_shared<ompl::geometric::RRTConnect>(si); }},
+        };
+        return table;
+    }
+
+    std::string join(const std::vector<std::string> &names)
+    {
+        std::string out;
+        for (const auto &n : names)
+            out += (out.empty() ? "" : ", ") + n;
+        return out;
+    }
+}  // namespace
+
+void ompl_parc::tools::addProblemOptions(po::options_description &options)
+{
+    const std::string names = join(scenarios::scenarioNames());
+    options.add_options()("scenario", po::value<std::string>()->default_value("mobile_cross"),
+                          ("built-in scenario: " + names).c_str())("robots", po::value<std::size_t>()->default_value(4),
+                                                                   "number of robots");
+}
+
+std::vector<std::string> ompl_parc::tools::plannerNames()
+{
+    std::vector<std::string> names;
+    for (const auto &entry : planners())
+        names.push_back(entry.first);
+    return names;
+}
+
+ompl::base::PlannerPtr ompl_parc::tools::createPlanner(const std::string &name,
+                                                       const ompl::base::SpaceInformationPtr &si,
+                                                       const std::vector<std::string> &params)
+{
+    const auto it = planners().find(name);
+    if (it == planners().end())
+        throw std::invalid_argument("unknown planner '" + name + "' (valid: " + join(plannerNames()) + ")");
+    auto planner = it->second(si);
+    for (const auto &assignment : params)
+    {
+        const auto eq = assignment.find('=');
+        if (eq == std::string::npos)
+            throw std::invalid_argument("--param needs key=value, got '" + assignment + "'");
+        const std::string key = assignment.substr(0, eq), value = assignment.substr(eq + 1);
+        if (!planner->params().hasParam(key))
+        {
+            std::vector<std::string> valid;
+            planner->params().getParamNames(valid);
+            throw std::invalid_argument("planner '" + name + "' has no parameter '" + key + "' (valid: " + join(valid) +
+                                        ")");
+        }
+        if (!planner->params().setParam(key, value))
+            throw std::invalid_argument("bad value '" + value + "' for parameter '" + key + "'");
+    }
+    return planner;
 }
 
 po::variables_map ompl_parc::tools::parse(int argc, char **argv, const po::options_description &options,

@@ -4,9 +4,11 @@
 #include "ompl_parc/MultiRobotProblem.h"
 
 #include <boost/program_options.hpp>
+#include <ompl/base/Planner.h>
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace ompl_parc::tools
 {
@@ -24,6 +26,14 @@ namespace ompl_parc::tools
     /** \brief Builds the problem named by --scenario/--robots and checks its starts and goals; throws
         std::invalid_argument with a one-line reason on bad input. */
     MultiRobotProblem problemFromOptions(const boost::program_options::variables_map &vm);
+
+    /** \brief The planners the tools can run, by name ("arc", "rrtconnect"). */
+    std::vector<std::string> plannerNames();
+
+    /** \brief Allocates planner \e name on \e si and applies \e params ("key=value", declared parameter
+        names); throws std::invalid_argument listing the valid names for an unknown planner or parameter. */
+    ompl::base::PlannerPtr createPlanner(const std::string &name, const ompl::base::SpaceInformationPtr &si,
+                                         const std::vector<std::string> &params);
 
     /** \brief Parses \e argc/\e argv into a variables map (throws on unknown or malformed options). */
     boost::program_options::variables_map parse(

@@ -1,13 +1,13 @@
-/* ompl_parc_demo: solve a built-in multi-robot scenario and re-check the result with the independent
-   validator. Until ARC lands, the planner is OMPL's own RRTConnect over the composite space.
+/* ompl_parc_demo: solve a built-in multi-robot scenario with one of our planners (or OMPL's RRTConnect over
+   the composite space) and re-check the result with the independent validator.
    Exit 0: solved and validated; 1: not solved in time (or invalid); 2: bad input. */
 #include "ToolSupport.h"
 
 #include "ompl_parc/SolutionFile.h"
 #include "ompl_parc/SolutionValidator.h"
+#include "ompl_parc/planners/ArcPlannerBase.h"
 
 #include <ompl/geometric/PathSimplifier.h>
-#include <ompl/geometric/planners/rrt/RRTConnect.h>
 #include <ompl/util/RandomNumbers.h>
 #include <ompl/util/Time.h>
 
@@ -18,6 +18,33 @@ namespace og = ompl::geometric;
 namespace po = boost::program_options;
 using namespace ompl_parc;
 
+namespace
+{
+    /** The plan on the timestep grid: ours directly, OMPL planners' composite paths shortcut and laid on it. */
+    MultiRobotPlan planOf(const ompl::base::Planner &planner, const MultiRobotSpaceInformationPtr &si,
+                          const ompl::base::ProblemDefinitionPtr &pdef)
+    {
+        if (const auto *arc = dynamic_cast<const ArcPlannerBase *>(&planner))
+            return arc->getPlan();
+        auto &path = *pdef->getSolutionPath()->as<og::PathGeometric>();
+        og::PathSimplifier(si).simplify(path, 1.0);
+        return MultiRobotPlan::fromPathGeometric(*si, path);
+    }
+
+    void printStatistics(const ompl::base::Planner &planner)
+    {
+        const auto *arc = dynamic_cast<const ArcPlannerBase *>(&planner);
+        if (arc == nullptr)
+            return;
+        const auto &s = arc->getStatistics();
+        std::cout << "stages     initial " << s.initialWall << " s, detection " << s.detectionWall << " s, resolution "
+                  << s.resolutionWall << " s (wall)\n"
+                  << "conflicts  " << s.conflicts << " resolved, " << s.solverCalls << " solver calls, " << s.expansions
+                  << " window expansions, " << s.teamGrowths << " robot-set growths, " << s.globalRepairs
+                  << " global repairs\n";
+    }
+}  // namespace
+
 int main(int argc, char **argv)
 {
     return tools::runTool(
@@ -26,7 +53,13 @@ int main(int argc, char **argv)
         {
             po::options_description options("Usage: ompl_parc_demo [options]\nOptions");
             tools::addProblemOptions(options);
-            options.add_options()("seed", po::value<std::uint32_t>()->default_value(1), "random seed")(
+            std::string plannerHelp = "planner:";
+            for (const auto &n : tools::plannerNames())
+                plannerHelp += " " + n;
+            options.add_options()("planner", po::value<std::string>()->default_value("arc"), plannerHelp.c_str())(
+                "param", po::value<std::vector<std::string>>()->composing(),
+                "planner parameter key=value (repeatable; declared names, e.g. window=100)")(
+                "seed", po::value<std::uint32_t>()->default_value(1), "random seed")(
                 "time-limit", po::value<double>()->default_value(30.), "planning time limit in seconds")(
                 "out", po::value<std::string>(), "write the solution to this JSON file")("help,h", "show this help");
             const auto vm = tools::parse(argc, argv, options);
@@ -43,23 +76,24 @@ int main(int argc, char **argv)
             const MultiRobotProblem problem = tools::problemFromOptions(vm);
             const auto &si = problem.getSpaceInformation();
             auto pdef = problem.createProblemDefinition();
-            auto planner = std::make_shared<og::RRTConnect>(si);
+            const auto params =
+                vm.count("param") ? vm["param"].as<std::vector<std::string>>() : std::vector<std::string>{};
+            auto planner = tools::createPlanner(vm["planner"].as<std::string>(), si, params);
             planner->setProblemDefinition(pdef);
             planner->setup();
 
             std::cout << "scenario   " << problem.getName() << ", " << si->getRobotCount() << " robots\n"
-                      << "planner    " << planner->getName() << " over the composite space\n";
+                      << "planner    " << planner->getName() << "\n";
             const ompl::time::point start = ompl::time::now();
             const auto status = planner->solve(ompl::base::timedPlannerTerminationCondition(timeLimit));
             const double planTime = ompl::time::seconds(ompl::time::now() - start);
             std::cout << "status     " << status.asString() << " after " << std::fixed << std::setprecision(3)
                       << planTime << " s\n";
+            printStatistics(*planner);
             if (status != ompl::base::PlannerStatus::EXACT_SOLUTION)
                 return static_cast<int>(tools::EXIT_FAILED);
 
-            auto &path = *pdef->getSolutionPath()->as<og::PathGeometric>();
-            og::PathSimplifier(si).simplify(path, 1.0);
-            const MultiRobotPlan plan = MultiRobotPlan::fromPathGeometric(*si, path);
+            const MultiRobotPlan plan = planOf(*planner, si, pdef);
             const ValidationReport report = SolutionValidator(problem).validate(plan);
             std::cout << "makespan   " << plan.getMakespan() << " timesteps ("
                       << plan.getMakespan() / si->getResolution() << " s at vmax 1)\n"

@@ -78,6 +78,33 @@ void ompl_parc::MultiRobotPlan::appendConfig(std::size_t robot, const double *q)
     paths_.at(robot).insert(paths_[robot].end(), q, q + dimensions_[robot]);
 }
 
+void ompl_parc::MultiRobotPlan::splice(std::size_t robot, std::size_t from, std::size_t to,
+                                       const std::vector<double> &segment)
+{
+    const unsigned int d = dimensions_.at(robot);
+    auto &path = paths_[robot];
+    const std::size_t arrival = getArrival(robot);
+    if (from > to || segment.empty() || segment.size() % d != 0)
+        throw ompl::Exception("MultiRobotPlan", "invalid splice");
+    // States before the window; a robot that arrived earlier holds its goal until the window starts.
+    std::vector<double> spliced(path.begin(), path.begin() + std::min(from, arrival) * d);
+    for (std::size_t t = arrival; t < from; ++t)
+        spliced.insert(spliced.end(), path.end() - d, path.end());
+    spliced.insert(spliced.end(), segment.begin(), segment.end());
+    if (to < arrival)
+        spliced.insert(spliced.end(), path.begin() + (to + 1) * d, path.end());
+    path = std::move(spliced);
+    trimArrival(robot);
+}
+
+void ompl_parc::MultiRobotPlan::trimArrival(std::size_t robot)
+{
+    auto &p = paths_[robot];
+    const unsigned int d = dimensions_[robot];
+    while (p.size() > d && std::equal(p.end() - 2 * d, p.end() - d, p.end() - d))
+        p.resize(p.size() - d);
+}
+
 std::size_t ompl_parc::MultiRobotPlan::getMakespan() const
 {
     std::size_t m = 0;
@@ -94,18 +121,18 @@ std::size_t ompl_parc::MultiRobotPlan::getSumOfCosts() const
     return s;
 }
 
-og::PathGeometric ompl_parc::MultiRobotPlan::toPathGeometric(const MultiRobotSpaceInformationPtr &si) const
+og::PathGeometricPtr ompl_parc::MultiRobotPlan::toPathGeometric(const MultiRobotSpaceInformationPtr &si) const
 {
     if (si->getRobotCount() != getRobotCount())
         throw ompl::Exception("MultiRobotPlan", "plan and space information have different team sizes");
-    og::PathGeometric path(si);
+    auto path = std::make_shared<og::PathGeometric>(si);
     ob::State *state = si->allocState();
     const std::size_t makespan = getMakespan();
     for (std::size_t t = 0; t <= makespan; ++t)
     {
         for (std::size_t i = 0; i < getRobotCount(); ++i)
             std::copy_n(getConfig(i, t), dimensions_[i], si->getRobotValues(state, i));
-        path.append(state);
+        path->append(state);
     }
     si->freeState(state);
     return path;
@@ -135,14 +162,8 @@ ompl_parc::MultiRobotPlan ompl_parc::MultiRobotPlan::fromPathGeometric(const Mul
 {
     MultiRobotPlan plan(si);
     plan.paths_ = layTeamPath(si, path);
-    // A robot arrives when it stops moving for good: drop its trailing copies of the final state.
     for (std::size_t i = 0; i < si.getRobotCount(); ++i)
-    {
-        auto &p = plan.paths_[i];
-        const unsigned int d = plan.dimensions_[i];
-        while (p.size() > d && std::equal(p.end() - 2 * d, p.end() - d, p.end() - d))
-            p.resize(p.size() - d);
-    }
+        plan.trimArrival(i);
     return plan;
 }
 

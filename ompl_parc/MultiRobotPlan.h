@@ -40,13 +40,20 @@ namespace ompl_parc
         void setRobotPath(std::size_t robot, std::vector<double> flat);
         void appendConfig(std::size_t robot, const double *q);
 
+        /** \brief Replace robot \e robot's states at timesteps [from, to] by \e segment (a robot that
+            arrived before \e from holds its goal until then); the states after \e to follow the segment,
+            shifted in time by the difference in length. The arrival is then recomputed (trailing copies of
+            the final state are dropped). */
+        void splice(std::size_t robot, std::size_t from, std::size_t to, const std::vector<double> &segment);
+
         /** \brief Largest arrival timestep over the team. */
         std::size_t getMakespan() const;
         /** \brief Sum of the robots' arrival timesteps. */
         std::size_t getSumOfCosts() const;
 
-        /** \brief One composite state per timestep 0..makespan. */
-        ompl::geometric::PathGeometric toPathGeometric(const MultiRobotSpaceInformationPtr &si) const;
+        /** \brief One composite state per timestep 0..makespan (returned by pointer: such paths are large and
+            OMPL's PathGeometric copies its states, so it is built once, in place). */
+        ompl::geometric::PathGeometricPtr toPathGeometric(const MultiRobotSpaceInformationPtr &si) const;
 
         /** \brief Lay a composite path on the timestep grid: each segment takes ceil(length x resolution)
             timesteps with all robots moving synchronised; trailing states at a robot's goal are dropped so
@@ -64,6 +71,9 @@ namespace ompl_parc
                                               double resolution);
 
       private:
+        /** \brief Drop trailing copies of the robot's final state: it arrives when it stops for good. */
+        void trimArrival(std::size_t robot);
+
         std::vector<unsigned int> dimensions_;
         std::vector<std::vector<double>> paths_;
         double resolution_{128.};

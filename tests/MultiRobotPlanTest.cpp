@@ -64,8 +64,8 @@ TEST(MultiRobotPlan, PathGeometricRoundTrip)
     for (std::size_t i = 0; i < 4; ++i)
         plan.setRobotPath(i, test::straightLine(problem.getStart(i), {problem.getStart(i)[0], 0.}, 8.));
     const auto path = plan.toPathGeometric(si);
-    EXPECT_EQ(path.getStateCount(), plan.getMakespan() + 1);
-    const auto back = MultiRobotPlan::fromPathGeometric(*si, path);
+    EXPECT_EQ(path->getStateCount(), plan.getMakespan() + 1);
+    const auto back = MultiRobotPlan::fromPathGeometric(*si, *path);
     for (std::size_t i = 0; i < 4; ++i)
         EXPECT_EQ(back.getRobotPath(i), plan.getRobotPath(i));
 }

@@ -12,6 +12,17 @@ namespace ompl_parc::test
     MultiRobotProblem twoDiscs(std::vector<double> startA, std::vector<double> goalA, std::vector<double> startB,
                                std::vector<double> goalB, bool wall = false, double resolution = 128.);
 
+    /** \brief Seconds within which a planner must return after its termination condition fires: 100 ms,
+        or 1 s in sanitizer builds, which run several times slower. */
+    constexpr double promptReturn()
+    {
+#ifdef OMPL_PARC_SANITIZED
+        return 1.0;
+#else
+        return 0.1;
+#endif
+    }
+
     /** \brief Straight-line timestep plan of one robot from \e a to \e b (at most 1/resolution per step). */
     std::vector<double> straightLine(const std::vector<double> &a, const std::vector<double> &b, double resolution);
 }  // namespace ompl_parc::test

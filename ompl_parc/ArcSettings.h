@@ -1,0 +1,62 @@
+#ifndef OMPL_PARC_ARC_SETTINGS_
+#define OMPL_PARC_ARC_SETTINGS_
+
+#include <string>
+#include <vector>
+
+namespace ompl_parc
+{
+    /** \brief The knobs of ARC's conflict resolution, shared by ARC and P-ARC (which expose them as
+        declared planner parameters). Defaults are the authors' tuned values for the mobile scenarios. */
+    struct ArcSettings
+    {
+        /** \brief How the half-width of the repair window grows after a failed attempt k = 1, 2, ...:
+            LINEAR: window + step * k; EXPONENTIAL: window + step * 2^(k-1) (the authors' schedule). */
+        enum class Growth
+        {
+            LINEAR,
+            EXPONENTIAL
+        };
+
+        /** \brief Which subproblem solvers to try, in order, on each window. */
+        enum class Solvers
+        {
+            HIERARCHY,   ///< prioritised ST-RRT first, then composite RRT-Connect (the paper's text)
+            COMPOSITE,   ///< composite RRT-Connect only (the authors' runs)
+            PRIORITIZED  ///< prioritised ST-RRT only
+        };
+
+        /** \brief Initial half-width of the repair window, in timesteps. */
+        unsigned int window{200};
+        Growth growth{Growth::LINEAR};
+        double growthStep{200.};
+        /** \brief Timesteps by which an invalid local start (goal) side is widened until it is valid. */
+        unsigned int endpointStep{200};
+        /** \brief Local bounds: the window's path bounding box widened by margin x its size on each side,
+            at least minBoundRange wide, clipped to the robot's bounds. */
+        double boundMargin{2.};
+        double minBoundRange{2.};
+        /** \brief Planner iterations allowed on a local window (none on the global problem). */
+        unsigned int sampleCap{5000};
+        Solvers solvers{Solvers::HIERARCHY};
+        /** \brief Shortcut the initial single-robot paths with OMPL's simplifier. */
+        bool simplifyInitial{true};
+
+        /** \brief The authors' tuned values: "mobile" (w 200, linear +200, margin 2, min range 2, cap 5000),
+            "planar" (w 100, exponential 1.05, endpoint step 10, margin 1, min range 0.5, cap 50000),
+            "panda" (w 20, exponential 1.05, endpoint step 10, margin 1, min range 0.5, cap 50000). Throws
+            ompl::Exception for another name. */
+        static ArcSettings profile(const std::string &name);
+
+        /** \brief Half-width of the window for attempt \e k (0 = the first). */
+        std::size_t halfWidth(unsigned int k) const;
+
+        static std::vector<std::string> profileNames();
+        static Growth growthFromString(const std::string &name);
+        static std::string toString(Growth growth);
+        static Solvers solversFromString(const std::string &name);
+        static std::string toString(Solvers solvers);
+    };
+}  // namespace ompl_parc
+
+#endif

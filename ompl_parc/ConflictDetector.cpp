@@ -1,0 +1,93 @@
+#include "ompl_parc/ConflictDetector.h"
+
+#include "ompl_parc/CapsuleCollision.h"
+
+#include <algorithm>
+#include <limits>
+
+ompl_parc::ConflictDetector::ConflictDetector(const MultiRobotSpaceInformation &si)
+    : si_(si), robots_(si.getRobotCount())
+{
+    for (std::size_t i = 0; i < robots_; ++i)
+        for (std::size_t j = i + 1; j < robots_; ++j)
+            pairs_.emplace_back(i, j);
+    frontier_.assign(pairs_.size(), 0);
+    allPairs_.resize(pairs_.size());
+    for (std::size_t p = 0; p < pairs_.size(); ++p)
+        allPairs_[p] = p;
+}
+
+std::optional<ompl_parc::Conflict> ompl_parc::ConflictDetector::findEarliest(const MultiRobotPlan &plan)
+{
+    const auto conflicts = scan(plan, allPairs_, 0, plan.getMakespan() + 1);
+    if (conflicts.empty())
+        return std::nullopt;
+    return conflicts.front();
+}
+
+std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRobotPlan &plan,
+                                                                   const std::vector<std::size_t> &pairs,
+                                                                   std::size_t from, std::size_t to,
+                                                                   const std::vector<char> &skip)
+{
+    // The pairs that still need checking in [from, to), and the last timestep each needs.
+    struct Active
+    {
+        std::size_t pair, end;
+    };
+    std::vector<Active> active;
+    std::size_t t = std::numeric_limits<std::size_t>::max();
+    for (std::size_t p : pairs)
+    {
+        const auto [i, j] = pairs_[p];
+        if (!skip.empty() && (skip[i] || skip[j]))
+            continue;
+        const std::size_t end = std::min(std::max(plan.getArrival(i), plan.getArrival(j)), to - 1);
+        if (frontier_[p] <= end && end >= from)
+        {
+            active.push_back({p, end});
+            t = std::min(t, std::max(frontier_[p], from));
+        }
+    }
+
+    // Bodies are computed once per robot and timestep, only for robots that some active pair needs.
+    std::vector<CollisionBody> bodies(robots_);
+    std::vector<std::size_t> stamp(robots_, std::numeric_limits<std::size_t>::max());
+    const auto body = [&](std::size_t robot, std::size_t step) -> const CollisionBody &
+    {
+        if (stamp[robot] != step)
+        {
+            si_.getRobot(robot)->computeBody(plan.getConfig(robot, step), bodies[robot]);
+            stamp[robot] = step;
+        }
+        return bodies[robot];
+    };
+
+    std::vector<Conflict> conflicts;
+    for (; !active.empty() && conflicts.empty(); ++t)
+    {
+        for (const Active &a : active)
+        {
+            if (frontier_[a.pair] > t)
+                continue;
+            const auto [i, j] = pairs_[a.pair];
+            if (bodiesCollide(body(i, t), body(j, t)))
+                conflicts.push_back({i, j, t});
+            else
+                frontier_[a.pair] = t + 1;
+        }
+        active.erase(std::remove_if(active.begin(), active.end(), [t](const Active &a) { return a.end <= t; }),
+                     active.end());
+    }
+    return conflicts;
+}
+
+void ompl_parc::ConflictDetector::invalidate(std::size_t robot, std::size_t timestep)
+{
+    for (std::size_t other = 0; other < robots_; ++other)
+        if (other != robot)
+        {
+            auto &f = frontier_[pairIndex(std::min(robot, other), std::max(robot, other))];
+            f = std::min(f, timestep);
+        }
+}

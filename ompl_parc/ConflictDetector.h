@@ -1,0 +1,62 @@
+#ifndef OMPL_PARC_CONFLICT_DETECTOR_
+#define OMPL_PARC_CONFLICT_DETECTOR_
+
+#include "ompl_parc/CollisionBody.h"
+#include "ompl_parc/Conflict.h"
+#include "ompl_parc/MultiRobotPlan.h"
+#include "ompl_parc/MultiRobotSpaceInformation.h"
+
+#include <optional>
+#include <vector>
+
+namespace ompl_parc
+{
+    /** \brief Finds robot-robot conflicts in a plan, remembering per robot pair how far it is known to be
+        conflict-free (the validated frontier) so that later scans resume there.
+
+        A pair (i, j) needs checking at timesteps 0..max(arrival i, arrival j); after that neither moves.
+        Robots hold their goal after arriving. When a robot's path is patched from timestep t on,
+        invalidate(robot, t) pulls the frontier of each of its pairs back to at most t. scan() examines a
+        subset of pairs over a range of timesteps and is the building block of both the sequential
+        earliest-conflict search (ARC) and the per-worker scans of P-ARC; it only reads the plan and the
+        frontiers of its own pairs, so disjoint pair subsets can be scanned concurrently. */
+    class ConflictDetector
+    {
+      public:
+        explicit ConflictDetector(const MultiRobotSpaceInformation &si);
+
+        /** \brief The earliest conflict of \e plan over all pairs, ties broken by (first, second); none if
+            the plan is conflict-free. Advances the frontiers of the pairs it validates. */
+        std::optional<Conflict> findEarliest(const MultiRobotPlan &plan);
+
+        /** \brief Scan \e pairs (indices as by pairIndex()) at timesteps [from, to) in time order; at each
+            timestep check every pair whose frontier has reached it, stop at the first timestep with a
+            conflict and return all conflicts at that timestep in pair order. Pairs whose first robot or
+            second robot is marked in \e skip are not checked. Frontiers of checked pairs advance. */
+        std::vector<Conflict> scan(const MultiRobotPlan &plan, const std::vector<std::size_t> &pairs, std::size_t from,
+                                   std::size_t to, const std::vector<char> &skip = {});
+
+        /** \brief Robot \e robot's path changed from timestep \e timestep on. */
+        void invalidate(std::size_t robot, std::size_t timestep);
+
+        /** \brief First timestep of pair (i, j), i < j, not yet known to be conflict-free. */
+        std::size_t getFrontier(std::size_t i, std::size_t j) const { return frontier_[pairIndex(i, j)]; }
+
+        /** \brief Index of pair (i, j), i < j, in the order (0,1), (0,2), ..., (1,2), ... */
+        std::size_t pairIndex(std::size_t i, std::size_t j) const
+        {
+            return i * robots_ - i * (i + 1) / 2 + (j - i - 1);
+        }
+        std::size_t getPairCount() const { return frontier_.size(); }
+        const std::pair<std::size_t, std::size_t> &getPair(std::size_t index) const { return pairs_[index]; }
+
+      private:
+        const MultiRobotSpaceInformation &si_;
+        std::size_t robots_;
+        std::vector<std::size_t> frontier_;
+        std::vector<std::pair<std::size_t, std::size_t>> pairs_;
+        std::vector<std::size_t> allPairs_;
+    };
+}  // namespace ompl_parc
+
+#endif

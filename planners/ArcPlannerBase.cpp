@@ -1,0 +1,259 @@
+#include "ompl_parc/planners/ArcPlannerBase.h"
+
+#include "ompl_parc/CompositeRRTConnectSolver.h"
+#include "ompl_parc/SeededRealVectorSampler.h"
+#include "ompl_parc/StageClock.h"
+
+#include <ompl/base/goals/GoalState.h>
+#include <ompl/util/Exception.h>
+#include <ompl/util/RandomNumbers.h>
+
+#include <limits>
+
+namespace ob = ompl::base;
+
+ompl_parc::ArcPlannerBase::ArcPlannerBase(const ob::SpaceInformationPtr &si, const std::string &name)
+    : ob::Planner(si, name), mrsi_(MultiRobotSpaceInformation::get(si, name))
+{
+    specs_.approximateSolutions = false;
+    specs_.optimizingPaths = false;
+    specs_.multithreaded = false;
+    declareParam<std::string>("profile", this, &ArcPlannerBase::setProfile, &ArcPlannerBase::getProfile,
+                              "mobile,planar,panda");
+    declareParam<unsigned int>("window", this, &ArcPlannerBase::setWindow, &ArcPlannerBase::getWindow, "1:10:2000");
+    declareParam<std::string>("growth", this, &ArcPlannerBase::setGrowth, &ArcPlannerBase::getGrowth,
+                              "linear,exponential");
+    declareParam<double>("growth_step", this, &ArcPlannerBase::setGrowthStep, &ArcPlannerBase::getGrowthStep,
+                         "0.:1.:1000.");
+    declareParam<unsigned int>("endpoint_step", this, &ArcPlannerBase::setEndpointStep,
+                               &ArcPlannerBase::getEndpointStep, "1:10:1000");
+    declareParam<double>("bound_margin", this, &ArcPlannerBase::setBoundMargin, &ArcPlannerBase::getBoundMargin,
+                         "0.:0.5:10.");
+    declareParam<double>("min_bound_range", this, &ArcPlannerBase::setMinBoundRange, &ArcPlannerBase::getMinBoundRange,
+                         "0.1:0.1:10.");
+    declareParam<unsigned int>("sample_cap", this, &ArcPlannerBase::setSampleCap, &ArcPlannerBase::getSampleCap,
+                               "0:1000:100000");
+    declareParam<std::string>("solvers", this, &ArcPlannerBase::setSolvers, &ArcPlannerBase::getSolvers,
+                              "hierarchy,composite,prioritized");
+    declareParam<bool>("simplify_initial", this, &ArcPlannerBase::setSimplifyInitial,
+                       &ArcPlannerBase::getSimplifyInitial, "0,1");
+    declareParam<unsigned int>("seed", this, &ArcPlannerBase::setSeed, &ArcPlannerBase::getSeed);
+}
+
+ompl_parc::ArcPlannerBase::~ArcPlannerBase() = default;
+
+void ompl_parc::ArcPlannerBase::setProfile(const std::string &profile)
+{
+    settings_ = ArcSettings::profile(profile);
+    profile_ = profile;
+    invalidateState();
+}
+
+void ompl_parc::ArcPlannerBase::setWindow(unsigned int window)
+{
+    if (window == 0)
+        throw ompl::Exception(getName(), "window must be at least 1 timestep");
+    settings_.window = window;
+    invalidateState();
+}
+
+void ompl_parc::ArcPlannerBase::setGrowth(const std::string &growth)
+{
+    settings_.growth = ArcSettings::growthFromString(growth);
+    invalidateState();
+}
+
+void ompl_parc::ArcPlannerBase::setGrowthStep(double step)
+{
+    if (!(step > 0.))
+        throw ompl::Exception(getName(), "growth_step must be positive");
+    settings_.growthStep = step;
+    invalidateState();
+}
+
+void ompl_parc::ArcPlannerBase::setEndpointStep(unsigned int step)
+{
+    if (step == 0)
+        throw ompl::Exception(getName(), "endpoint_step must be at least 1 timestep");
+    settings_.endpointStep = step;
+    invalidateState();
+}
+
+void ompl_parc::ArcPlannerBase::setBoundMargin(double margin)
+{
+    if (!(margin >= 0.))
+        throw ompl::Exception(getName(), "bound_margin must be non-negative");
+    settings_.boundMargin = margin;
+    invalidateState();
+}
+
+void ompl_parc::ArcPlannerBase::setMinBoundRange(double range)
+{
+    if (!(range > 0.))
+        throw ompl::Exception(getName(), "min_bound_range must be positive");
+    settings_.minBoundRange = range;
+    invalidateState();
+}
+
+void ompl_parc::ArcPlannerBase::setSampleCap(unsigned int cap)
+{
+    settings_.sampleCap = cap;
+    invalidateState();
+}
+
+void ompl_parc::ArcPlannerBase::setSolvers(const std::string &solvers)
+{
+    settings_.solvers = ArcSettings::solversFromString(solvers);
+    invalidateState();
+}
+
+void ompl_parc::ArcPlannerBase::setSimplifyInitial(bool simplify)
+{
+    settings_.simplifyInitial = simplify;
+}
+
+void ompl_parc::ArcPlannerBase::setSeed(unsigned int seed)
+{
+    seed_ = seed;
+}
+
+void ompl_parc::ArcPlannerBase::invalidateState()
+{
+    resolver_.reset();  // rebuilt from the new settings at the next solve()
+}
+
+std::vector<ompl_parc::SubproblemSolverPtr> ompl_parc::ArcPlannerBase::makeHierarchy() const
+{
+    return {std::make_shared<CompositeRRTConnectSolver>()};
+}
+
+void ompl_parc::ArcPlannerBase::clear()
+{
+    ob::Planner::clear();
+    problem_.reset();
+    plan_ = MultiRobotPlan();
+    planned_.clear();
+    initialised_ = false;
+    detector_.reset();
+    resolver_.reset();
+    cache_.clear();
+    statistics_ = ArcStatistics();
+    statusMessage_.clear();
+    effectiveSeed_ = 0;
+}
+
+std::optional<ob::PlannerStatus> ompl_parc::ArcPlannerBase::readProblem()
+{
+    const ob::State *start = pdef_->getStartStateCount() > 0 ? pdef_->getStartState(0) : nullptr;
+    const auto *goal = dynamic_cast<const ob::GoalState *>(pdef_->getGoal().get());
+    if (start == nullptr)
+    {
+        statusMessage_ = "no start state";
+        return ob::PlannerStatus(ob::PlannerStatus::INVALID_START);
+    }
+    if (goal == nullptr)
+    {
+        statusMessage_ = "the goal must be an ompl::base::GoalState (one composite goal state)";
+        return ob::PlannerStatus(ob::PlannerStatus::UNRECOGNIZED_GOAL_TYPE);
+    }
+    std::vector<std::vector<double>> starts, goals;
+    for (std::size_t i = 0; i < mrsi_->getRobotCount(); ++i)
+    {
+        const unsigned int d = mrsi_->getRobot(i)->getDimension();
+        const double *s = mrsi_->getRobotValues(start, i), *g = mrsi_->getRobotValues(goal->getState(), i);
+        starts.emplace_back(s, s + d);
+        goals.emplace_back(g, g + d);
+    }
+    auto problem = std::make_unique<MultiRobotProblem>(mrsi_, starts, goals);
+    // Report the first problem found, as the matching status (start before goal).
+    const std::string reason = problem->checkEndpoints();
+    if (!reason.empty())
+    {
+        statusMessage_ = reason;
+        OMPL_ERROR("%s: %s", getName().c_str(), reason.c_str());
+        return ob::PlannerStatus(reason.rfind("start", 0) == 0 ? ob::PlannerStatus::INVALID_START
+                                                               : ob::PlannerStatus::INVALID_GOAL);
+    }
+    problem_ = std::move(problem);
+    plan_ = MultiRobotPlan(*mrsi_);
+    planned_.assign(mrsi_->getRobotCount(), 0);
+    detector_ = std::make_unique<ConflictDetector>(*mrsi_);
+    if (effectiveSeed_ == 0)
+        effectiveSeed_ = seed_ != 0 ? seed_ : ompl::RNG().uniformInt(1, std::numeric_limits<int>::max());
+    return std::nullopt;
+}
+
+ob::PlannerStatus ompl_parc::ArcPlannerBase::solve(const ob::PlannerTerminationCondition &ptc)
+{
+    checkValidity();
+    statusMessage_.clear();
+    if (!problem_)
+        if (auto bad = readProblem())
+            return *bad;
+    if (!initialised_)
+    {
+        bool done;
+        {
+            StageClock clock(statistics_.initialWall, statistics_.initialCpu);
+            done = computeInitialPlans(ptc);
+        }
+        if (!done)
+        {
+            statusMessage_ = "time ran out while planning the robots' individual paths";
+            return ob::PlannerStatus(ob::PlannerStatus::TIMEOUT);
+        }
+        initialised_ = true;
+    }
+    if (!resolver_)
+        resolver_ = std::make_unique<ConflictResolver>(*mrsi_, settings_, makeHierarchy());
+    if (!resolveConflicts(ptc))
+    {
+        statusMessage_ = "time ran out while resolving conflicts";
+        return ob::PlannerStatus(ob::PlannerStatus::TIMEOUT);
+    }
+    pdef_->addSolutionPath(plan_.toPathGeometric(mrsi_), false, 0., getName());
+    return ob::PlannerStatus(ob::PlannerStatus::EXACT_SOLUTION);
+}
+
+void ompl_parc::ArcPlannerBase::applyRepair(const Repair &repair)
+{
+    const Subproblem &sub = repair.subproblem;
+    for (std::size_t k = 0; k < sub.robots.size(); ++k)
+    {
+        plan_.splice(sub.robots[k], sub.windowStart, sub.windowEnd, repair.patch.paths[k]);
+        detector_->invalidate(sub.robots[k], sub.windowStart);
+    }
+    const std::size_t duration = repair.patch.getDuration(plan_.getDimension(sub.robots.front()));
+    cache_.add(sub.robots, sub.windowStart, sub.windowStart + duration);
+    ++statistics_.repairs;
+    statistics_.solverCalls += repair.attempts;
+    statistics_.expansions += repair.expansions;
+    statistics_.globalRepairs += repair.global ? 1 : 0;
+    ++statistics_.solverWins[repair.solver];
+}
+
+void ompl_parc::ArcPlannerBase::getPlannerData(ob::PlannerData &data) const
+{
+    ob::Planner::getPlannerData(data);
+    const auto &s = statistics_;
+    auto &p = data.properties;
+    p["initial_wall_time REAL"] = std::to_string(s.initialWall);
+    p["initial_cpu_time REAL"] = std::to_string(s.initialCpu);
+    p["detection_wall_time REAL"] = std::to_string(s.detectionWall);
+    p["detection_cpu_time REAL"] = std::to_string(s.detectionCpu);
+    p["resolution_wall_time REAL"] = std::to_string(s.resolutionWall);
+    p["resolution_cpu_time REAL"] = std::to_string(s.resolutionCpu);
+    p["conflicts INTEGER"] = std::to_string(s.conflicts);
+    p["repairs INTEGER"] = std::to_string(s.repairs);
+    p["solver_calls INTEGER"] = std::to_string(s.solverCalls);
+    p["expansions INTEGER"] = std::to_string(s.expansions);
+    p["team_growths INTEGER"] = std::to_string(s.teamGrowths);
+    p["global_repairs INTEGER"] = std::to_string(s.globalRepairs);
+    for (const auto &[solver, wins] : s.solverWins)
+        p["wins_" + solver + " INTEGER"] = std::to_string(wins);
+    if (initialised_)
+    {
+        p["makespan INTEGER"] = std::to_string(plan_.getMakespan());
+        p["sum_of_costs INTEGER"] = std::to_string(plan_.getSumOfCosts());
+    }
+}

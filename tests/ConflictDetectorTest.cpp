@@ -1,0 +1,146 @@
+#include "TestProblems.h"
+
+#include "ompl_parc/ConflictDetector.h"
+#include "ompl_parc/RepairCache.h"
+#include "ompl_parc/scenarios/Scenarios.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace ompl_parc;
+
+namespace
+{
+    /** Random-walk plans of different lengths for the discs of Mobile Circle 8, all started in a 7 x 7
+        square, so that about half of the plans have conflicts, at all sorts of times. */
+    MultiRobotPlan randomPlan(const MultiRobotProblem &problem, std::mt19937 &rng)
+    {
+        const auto &si = *problem.getSpaceInformation();
+        MultiRobotPlan plan(si);
+        std::uniform_real_distribution<double> step(-1. / 128., 1. / 128.);
+        std::uniform_int_distribution<int> length(50, 400);
+        for (std::size_t r = 0; r < si.getRobotCount(); ++r)
+        {
+            std::uniform_real_distribution<double> where(-3.5, 3.5);
+            std::vector<double> q = {where(rng), where(rng)}, flat = q;
+            const int n = length(rng);
+            for (int t = 0; t < n; ++t)
+            {
+                q[0] += 5. * step(rng);  // bigger than a timestep allows: the detector does not check speed
+                q[1] += 5. * step(rng);
+                flat.insert(flat.end(), q.begin(), q.end());
+            }
+            plan.setRobotPath(r, flat);
+        }
+        return plan;
+    }
+
+    /** All conflicts by brute force, in (t, i, j) order. */
+    std::vector<Conflict> bruteForce(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan)
+    {
+        std::vector<Conflict> all;
+        for (std::size_t t = 0; t <= plan.getMakespan(); ++t)
+            for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
+                for (std::size_t j = i + 1; j < plan.getRobotCount(); ++j)
+                    if (si.robotsCollide(i, plan.getConfig(i, t), j, plan.getConfig(j, t)))
+                        all.push_back({i, j, t});
+        return all;
+    }
+}  // namespace
+
+TEST(ConflictDetector, EarliestConflictMatchesBruteForceOnRandomPlans)
+{
+    std::mt19937 rng(5);
+    const auto problem = scenarios::createMobileCircle(8);
+    const auto &si = *problem.getSpaceInformation();
+    int withConflicts = 0;
+    for (int k = 0; k < 40; ++k)
+    {
+        const auto plan = randomPlan(problem, rng);
+        const auto expected = bruteForce(si, plan);
+        ConflictDetector detector(si);
+        const auto found = detector.findEarliest(plan);
+        ASSERT_EQ(found.has_value(), !expected.empty());
+        if (found)
+        {
+            EXPECT_EQ(*found, expected.front());
+            ++withConflicts;
+        }
+    }
+    EXPECT_GT(withConflicts, 10);
+}
+
+TEST(ConflictDetector, FrontiersResumeAndResetOnInvalidation)
+{
+    std::mt19937 rng(9);
+    const auto problem = scenarios::createMobileCircle(8);
+    const auto &si = *problem.getSpaceInformation();
+    for (int k = 0; k < 20; ++k)
+    {
+        auto plan = randomPlan(problem, rng);
+        const auto expected = bruteForce(si, plan);
+        if (expected.empty())
+            continue;
+        ConflictDetector detector(si);
+        const Conflict c = *detector.findEarliest(plan);
+        // Everything before the conflict is validated; the conflicting pair stops at the conflict.
+        EXPECT_EQ(detector.getFrontier(c.first, c.second), c.timestep);
+        // Scanning again finds the same conflict (the frontier does not skip it).
+        EXPECT_EQ(*detector.findEarliest(plan), c);
+        // Move robot c.first away for good from the conflict on: the next earliest must again match brute force.
+        auto path = plan.getRobotPath(c.first);
+        for (std::size_t t = c.timestep; t < plan.getStateCount(c.first); ++t)
+            path[2 * t] += 1000.;
+        plan.setRobotPath(c.first, path);
+        detector.invalidate(c.first, c.timestep);
+        const auto after = bruteForce(si, plan);
+        const auto next = detector.findEarliest(plan);
+        ASSERT_EQ(next.has_value(), !after.empty());
+        if (next)
+            EXPECT_EQ(*next, after.front());
+    }
+}
+
+TEST(ConflictDetector, ScanOfAPairSubsetReportsAllConflictsAtTheFirstConflictingTimestep)
+{
+    // Two head-on pairs meeting at the same time: a scan of all pairs returns both, in pair order.
+    const auto problem = scenarios::createMobileCross(4);
+    const auto &si = *problem.getSpaceInformation();
+    MultiRobotPlan plan(si);
+    for (std::size_t r = 0; r < 4; ++r)
+        plan.setRobotPath(r, test::straightLine(problem.getStart(r), problem.getGoal(r), 128.));
+    ConflictDetector detector(si);
+    std::vector<std::size_t> all(detector.getPairCount());
+    for (std::size_t p = 0; p < all.size(); ++p)
+        all[p] = p;
+    const auto conflicts = detector.scan(plan, all, 0, plan.getMakespan() + 1);
+    ASSERT_EQ(conflicts.size(), 2u);
+    EXPECT_EQ(conflicts[0].first, 0u);
+    EXPECT_EQ(conflicts[0].second, 1u);
+    EXPECT_EQ(conflicts[1].first, 2u);
+    EXPECT_EQ(conflicts[1].second, 3u);
+    EXPECT_EQ(conflicts[0].timestep, conflicts[1].timestep);
+    // Skipping robot 0 leaves only the (2, 3) conflict; a horizon before it finds nothing.
+    ConflictDetector fresh(si);
+    std::vector<char> skip = {1, 0, 0, 0};
+    const auto skipped = fresh.scan(plan, all, 0, plan.getMakespan() + 1, skip);
+    ASSERT_EQ(skipped.size(), 1u);
+    EXPECT_EQ(skipped[0].first, 2u);
+    ConflictDetector early(si);
+    EXPECT_TRUE(early.scan(plan, all, 0, conflicts[0].timestep).empty());
+    EXPECT_EQ(early.getFrontier(0, 1), conflicts[0].timestep);
+}
+
+TEST(RepairCache, ExpansionIsTheTransitiveClosureOverOverlappingRepairs)
+{
+    RepairCache cache;
+    cache.add({1, 2}, 100, 200);
+    cache.add({2, 5}, 150, 300);
+    cache.add({5, 7}, 1000, 1100);  // far in time: not pulled in
+    cache.add({0, 9}, 100, 200);    // overlapping but unrelated robots
+    EXPECT_EQ(cache.expand({1, 3, 180}, 20), (std::vector<std::size_t>{1, 2, 3, 5}));
+    EXPECT_EQ(cache.expand({1, 3, 500}, 20), (std::vector<std::size_t>{1, 3}));
+    EXPECT_EQ(cache.expand({5, 8, 1050}, 20), (std::vector<std::size_t>{5, 7, 8}));
+    EXPECT_EQ(cache.expand({4, 6, 10}, 10000), (std::vector<std::size_t>{4, 6}));
+}

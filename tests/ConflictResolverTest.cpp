@@ -1,0 +1,141 @@
+#include "TestProblems.h"
+
+#include "ompl_parc/ConflictResolver.h"
+#include "ompl_parc/scenarios/Scenarios.h"
+
+#include <gtest/gtest.h>
+
+#include <mutex>
+
+using namespace ompl_parc;
+namespace ob = ompl::base;
+
+namespace
+{
+    /** A solver that records what it is asked and never succeeds. */
+    class RecordingSolver : public SubproblemSolver
+    {
+      public:
+        std::string getName() const override { return "recording"; }
+        bool solve(const MultiRobotSpaceInformation &, const Subproblem &sub, const ob::PlannerTerminationCondition &,
+                   std::uint_fast32_t, Patch &) const override
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            asked_.push_back(sub);
+            return false;
+        }
+        mutable std::mutex mutex_;
+        mutable std::vector<Subproblem> asked_;
+    };
+
+    /** Mobile Cross 4 with straight-line plans: robots 0 and 1 collide head-on in the middle. */
+    struct HeadOn : testing::Test
+    {
+        MultiRobotProblem problem = scenarios::createMobileCross(4);
+        MultiRobotPlan plan{*problem.getSpaceInformation()};
+        void SetUp() override
+        {
+            for (std::size_t r = 0; r < 4; ++r)
+                plan.setRobotPath(r, test::straightLine(problem.getStart(r), problem.getGoal(r), 128.));
+        }
+    };
+}  // namespace
+
+TEST_F(HeadOn, WindowEndpointsAndLocalBoundsFollowTheSettings)
+{
+    ArcSettings settings;  // mobile: window 200, margin 2, min range 2
+    auto solver = std::make_shared<RecordingSolver>();
+    ConflictResolver resolver(*problem.getSpaceInformation(), settings, {solver});
+    // Conflict at t = 2000: robots 0 and 1 are 2*(10 - 2000/128) ... overlapping; the window edges are clear.
+    const auto sub = resolver.makeSubproblem(plan, {0, 1}, 2400, 0);
+    EXPECT_EQ(sub.windowStart, 2200u);
+    EXPECT_EQ(sub.windowEnd, 2560u);  // clipped to the team's latest arrival
+    EXPECT_EQ(sub.starts[0], std::vector<double>(plan.getConfig(0, 2200), plan.getConfig(0, 2200) + 2));
+    EXPECT_EQ(sub.goals[1], problem.getGoal(1));
+    // Robot 0 moves along x from 10 - 2200/128 to -10 over the window: box widened by 2x its size per side.
+    const double lo = -10., hi = 10. - 2200. / 128., size = hi - lo;
+    EXPECT_NEAR(sub.bounds[0].low[0], std::max(lo - 2. * size, -11.), 1e-9);
+    EXPECT_NEAR(sub.bounds[0].high[0], hi + 2. * size, 1e-9);
+    // y never changes: the minimum range (2) centred on the line, inside the robot's bounds.
+    EXPECT_NEAR(sub.bounds[0].low[1], -2.5 - 1., 1e-9);
+    EXPECT_NEAR(sub.bounds[0].high[1], -2.5 + 1., 1e-9);
+    EXPECT_EQ(sub.sampleCap, settings.sampleCap);
+}
+
+TEST_F(HeadOn, InvalidEndpointsWidenOnlyTheirSide)
+{
+    ArcSettings settings;
+    settings.window = 10;  // the window edges fall inside the collision
+    settings.endpointStep = 50;
+    ConflictResolver resolver(*problem.getSpaceInformation(), settings, {std::make_shared<RecordingSolver>()});
+    const std::size_t t = 1280;  // the robots pass through each other at the centre
+    const auto sub = resolver.makeSubproblem(plan, {0, 1}, t, 0);
+    // Robots of radius 0.5 overlap while |x| < 0.5, i.e. for 64 timesteps either side of t.
+    EXPECT_EQ(sub.windowStart, t - 10 - 50 - 50);
+    EXPECT_EQ(sub.windowEnd, t + 10 + 50 + 50);
+    for (const auto *side : {&sub.starts, &sub.goals})
+        EXPECT_FALSE(problem.getSpaceInformation()->robotsCollide(0, (*side)[0].data(), 1, (*side)[1].data()));
+}
+
+TEST_F(HeadOn, FailedWindowsGrowUntilTheGlobalProblem)
+{
+    ArcSettings settings;
+    settings.window = 100;
+    settings.growthStep = 300;
+    auto solver = std::make_shared<RecordingSolver>();
+    ConflictResolver resolver(*problem.getSpaceInformation(), settings, {solver});
+    // Give up once the global problem has been tried three times.
+    const auto ptc = ob::PlannerTerminationCondition(
+        [&]
+        {
+            std::lock_guard<std::mutex> lock(solver->mutex_);
+            std::size_t globals = 0;
+            for (const auto &s : solver->asked_)
+                globals += s.bounds.empty() ? 1 : 0;
+            return globals >= 3;
+        });
+    EXPECT_FALSE(resolver.resolve(plan, {0, 1}, 1280, ptc, 1).has_value());
+    const auto &asked = solver->asked_;
+    ASSERT_GE(asked.size(), 4u);
+    // Half-widths 100, 400, 700, ...: the window grows until it covers [0, 2560], which is the global problem.
+    EXPECT_EQ(asked[0].windowStart, 1180u);
+    EXPECT_EQ(asked[1].windowStart, 880u);
+    EXPECT_EQ(asked[2].windowStart, 580u);
+    const auto &last = asked.back();
+    EXPECT_TRUE(last.bounds.empty());
+    EXPECT_EQ(last.sampleCap, 0u);
+    EXPECT_EQ(last.windowStart, 0u);
+    EXPECT_EQ(last.windowEnd, 2560u);
+    EXPECT_EQ(last.starts[0], problem.getStart(0));
+    EXPECT_EQ(last.goals[1], problem.getGoal(1));
+}
+
+TEST(ArcSettings, GrowthSchedulesAndProfiles)
+{
+    ArcSettings linear;
+    EXPECT_EQ(linear.halfWidth(0), 200u);
+    EXPECT_EQ(linear.halfWidth(3), 800u);
+    const auto planar = ArcSettings::profile("planar");
+    EXPECT_EQ(planar.halfWidth(0), 100u);
+    EXPECT_EQ(planar.halfWidth(1), 102u);  // 100 + ceil(1.05)
+    EXPECT_EQ(planar.halfWidth(5), 117u);  // 100 + ceil(1.05 * 16)
+    EXPECT_THROW(ArcSettings::profile("humanoid"), ompl::Exception);
+    EXPECT_THROW(ArcSettings::growthFromString("cubic"), ompl::Exception);
+    EXPECT_THROW(ArcSettings::solversFromString("magic"), ompl::Exception);
+}
+
+TEST(MultiRobotPlanSplice, LongerAndShorterPatchesShiftTheRest)
+{
+    MultiRobotPlan plan({1}, 1.);
+    plan.setRobotPath(0, {0, 1, 2, 3, 4, 5, 6});
+    auto longer = plan;
+    longer.splice(0, 2, 4, {2, 2.5, 3, 3.5, 4});
+    EXPECT_EQ(longer.getRobotPath(0), (std::vector<double>{0, 1, 2, 2.5, 3, 3.5, 4, 5, 6}));
+    auto shorter = plan;
+    shorter.splice(0, 1, 5, {1, 5});
+    EXPECT_EQ(shorter.getRobotPath(0), (std::vector<double>{0, 1, 5, 6}));
+    auto held = plan;  // the robot arrived at 6 before the window [8, 9]: it holds its goal until 8
+    held.splice(0, 8, 9, {6, 7, 6, 6});
+    EXPECT_EQ(held.getRobotPath(0), (std::vector<double>{0, 1, 2, 3, 4, 5, 6, 6, 6, 7, 6}));
+    EXPECT_EQ(held.getArrival(0), 10u);
+}

@@ -1,0 +1,144 @@
+/* ARC-family planners on the paper's 2D scenarios, same seeds side by side in one run.
+   Each (planner, scenario) runs once per seed 1..5 (Google Benchmark repetitions, manual time = planning
+   wall time); every result is re-checked by the SolutionValidator and an invalid or failed run aborts the
+   benchmark. At the end a Markdown table gives the median time, the median per-stage wall times and, for
+   every planner but ARC, the speedup of medians against ARC on the same scenario and seeds.
+   Usage: ompl_parc_bench_planners [--benchmark_filter=REGEX] (the table covers what ran). */
+#include "ompl_parc/SolutionValidator.h"
+#include "ompl_parc/planners/ARC.h"
+#include "ompl_parc/scenarios/Scenarios.h"
+
+#include <benchmark/benchmark.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/Time.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <stdexcept>
+
+using namespace ompl_parc;
+
+namespace
+{
+    constexpr int SEEDS = 5;
+
+    struct Case
+    {
+        std::string scenario;
+        std::size_t robots;
+        std::string profile;
+    };
+
+    struct Run
+    {
+        double total, initial, detection, resolution;
+    };
+
+    using PlannerFactory = std::function<std::shared_ptr<ArcPlannerBase>(const ompl::base::SpaceInformationPtr &)>;
+
+    std::map<std::pair<std::string, std::string>, std::vector<Run>> &results()
+    {
+        static std::map<std::pair<std::string, std::string>, std::vector<Run>> table;
+        return table;
+    }
+
+    std::string label(const Case &c)
+    {
+        return c.scenario + " " + std::to_string(c.robots);
+    }
+
+    void runPlanner(benchmark::State &state, const std::string &name, const PlannerFactory &factory, const Case &c)
+    {
+        auto &runs = results()[{label(c), name}];
+        for (auto _ : state)
+        {
+            const auto problem = scenarios::createScenario(c.scenario, c.robots);
+            auto planner = factory(problem.getSpaceInformation());
+            planner->setProfile(c.profile);
+            planner->setSeed(static_cast<unsigned int>(runs.size() % SEEDS + 1));
+            planner->setProblemDefinition(problem.createProblemDefinition());
+            planner->setup();
+            const auto start = ompl::time::now();
+            const auto status = planner->solve(ompl::base::timedPlannerTerminationCondition(120.));
+            const double seconds = ompl::time::seconds(ompl::time::now() - start);
+            if (status != ompl::base::PlannerStatus::EXACT_SOLUTION)
+                throw std::runtime_error(name + " failed on " + label(c) + ": " + planner->getStatusMessage());
+            const auto report = SolutionValidator(problem).validate(planner->getPlan());
+            if (!report.valid)
+                throw std::runtime_error(name + " returned an invalid plan on " + label(c) + ": " + report.message);
+            state.SetIterationTime(seconds);
+            const auto &s = planner->getStatistics();
+            runs.push_back({seconds, s.initialWall, s.detectionWall, s.resolutionWall});
+            state.counters["conflicts"] = s.conflicts;
+            state.counters["makespan"] = static_cast<double>(planner->getPlan().getMakespan());
+        }
+    }
+
+    double median(std::vector<double> v)
+    {
+        std::sort(v.begin(), v.end());
+        const std::size_t n = v.size();
+        return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    }
+
+    void printTable()
+    {
+        std::printf(
+            "\n| scenario | planner | median time (s) | initial | detection | resolution | speedup vs ARC |\n"
+            "|---|---|---|---|---|---|---|\n");
+        for (const auto &[key, runs] : results())
+        {
+            if (runs.empty())
+                continue;
+            auto column = [&runs](double Run::*field)
+            {
+                std::vector<double> v;
+                for (const auto &r : runs)
+                    v.push_back(r.*field);
+                return median(v);
+            };
+            const double total = column(&Run::total);
+            std::string speedup = "—";
+            const auto arc = results().find({key.first, "ARC"});
+            if (key.second != "ARC" && arc != results().end() && !arc->second.empty())
+            {
+                std::vector<double> v;
+                for (const auto &r : arc->second)
+                    v.push_back(r.total);
+                speedup = std::to_string(median(v) / total) + "x";
+            }
+            std::printf("| %s | %s | %.3f | %.3f | %.3f | %.3f | %s |\n", key.first.c_str(), key.second.c_str(), total,
+                        column(&Run::initial), column(&Run::detection), column(&Run::resolution), speedup.c_str());
+        }
+    }
+}  // namespace
+
+int main(int argc, char **argv)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    const std::vector<Case> cases = {{"mobile_cross", 16, "mobile"},
+                                     {"mobile_cross", 64, "mobile"},
+                                     {"planar_cross", 8, "planar"},
+                                     {"planar_cross", 16, "planar"}};
+    const std::vector<std::pair<std::string, PlannerFactory>> planners = {
+        {"ARC", [](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<ARC>(si); }}};
+    for (const auto &c : cases)
+        for (const auto &[name, factory] : planners)
+            benchmark::RegisterBenchmark((name + "/" + c.scenario + "/" + std::to_string(c.robots)).c_str(),
+                                         [name = name, factory = factory, c](benchmark::State &state)
+                                         { runPlanner(state, name, factory, c); })
+                ->Iterations(1)
+                ->Repetitions(SEEDS)
+                ->UseManualTime()
+                ->Unit(benchmark::kMillisecond)
+                ->ReportAggregatesOnly(true);
+    benchmark::Initialize(&argc, argv);
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    printTable();
+    return 0;
+}
