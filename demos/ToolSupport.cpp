@@ -1,6 +1,7 @@
 #include "ToolSupport.h"
 
 #include "ompl_parc/planners/ARC.h"
+#include "ompl_parc/planners/PARC.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
@@ -30,6 +31,7 @@ namespace
     {
         static const std::map<std::string, ompl::base::PlannerAllocator> table = {
             {"arc", [](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<ompl_parc::ARC>(si); }},
+            {"parc", [](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<ompl_parc::PARC>(si); }},
             {"rrtconnect", [](const ompl::base::SpaceInformationPtr &si)
              { return std::make_shared<ompl::geometric::RRTConnect>(si); }},
         };

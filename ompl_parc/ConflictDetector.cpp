@@ -19,7 +19,7 @@ ompl_parc::ConflictDetector::ConflictDetector(const MultiRobotSpaceInformation &
 
 std::optional<ompl_parc::Conflict> ompl_parc::ConflictDetector::findEarliest(const MultiRobotPlan &plan)
 {
-    const auto conflicts = scan(plan, allPairs_, 0, plan.getMakespan() + 1);
+    const auto conflicts = scan(plan, allPairs_, 0, plan.getMakespan() + 1, true);
     if (conflicts.empty())
         return std::nullopt;
     return conflicts.front();
@@ -28,33 +28,34 @@ std::optional<ompl_parc::Conflict> ompl_parc::ConflictDetector::findEarliest(con
 std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRobotPlan &plan,
                                                                    const std::vector<std::size_t> &pairs,
                                                                    std::size_t from, std::size_t to,
-                                                                   const std::vector<char> &skip)
+                                                                   bool firstTimestepOnly, const PairFilter &skip)
 {
-    // The pairs that still need checking in [from, to), and the last timestep each needs.
+    // The pairs that still need checking in [from, to): the next timestep each needs and the last one.
+    // Frontiers are tracked here and written back once at the end, so that workers scanning interleaved
+    // pair subsets do not write to shared cache lines at every timestep.
     struct Active
     {
-        std::size_t pair, end;
+        std::size_t pair, next, end;
     };
-    std::vector<Active> active;
+    std::vector<Active> active, finished;
     std::size_t t = std::numeric_limits<std::size_t>::max();
     for (std::size_t p : pairs)
     {
         const auto [i, j] = pairs_[p];
-        if (!skip.empty() && (skip[i] || skip[j]))
+        if (skip && skip(i, j))
             continue;
         const std::size_t end = std::min(std::max(plan.getArrival(i), plan.getArrival(j)), to - 1);
         if (frontier_[p] <= end && end >= from)
         {
-            active.push_back({p, end});
-            t = std::min(t, std::max(frontier_[p], from));
+            active.push_back({p, std::max(frontier_[p], from), end});
+            t = std::min(t, active.back().next);
         }
     }
 
     // Bodies are computed once per robot and timestep, only for robots that some active pair needs.
     std::vector<CollisionBody> bodies(robots_);
     std::vector<std::size_t> stamp(robots_, std::numeric_limits<std::size_t>::max());
-    const auto body = [&](std::size_t robot, std::size_t step) -> const CollisionBody &
-    {
+    const auto body = [&](std::size_t robot, std::size_t step) -> const CollisionBody & {
         if (stamp[robot] != step)
         {
             si_.getRobot(robot)->computeBody(plan.getConfig(robot, step), bodies[robot]);
@@ -64,22 +65,43 @@ std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRo
     };
 
     std::vector<Conflict> conflicts;
-    for (; !active.empty() && conflicts.empty(); ++t)
+    for (; !active.empty() && !(firstTimestepOnly && !conflicts.empty()); ++t)
     {
-        for (const Active &a : active)
+        for (Active &a : active)
         {
-            if (frontier_[a.pair] > t)
+            if (a.next > t)
                 continue;
             const auto [i, j] = pairs_[a.pair];
             if (bodiesCollide(body(i, t), body(j, t)))
+            {
                 conflicts.push_back({i, j, t});
+                a.end = t;  // this pair is done: its frontier stays at the conflict
+            }
             else
-                frontier_[a.pair] = t + 1;
+                a.next = t + 1;
         }
+        for (const Active &a : active)
+            if (a.end <= t)
+                finished.push_back(a);
         active.erase(std::remove_if(active.begin(), active.end(), [t](const Active &a) { return a.end <= t; }),
                      active.end());
     }
+    for (const auto *set : {&active, &finished})
+        for (const Active &a : *set)
+            frontier_[a.pair] = a.next;
     return conflicts;
+}
+
+std::size_t ompl_parc::ConflictDetector::firstUnvalidated(const MultiRobotPlan &plan) const
+{
+    std::size_t first = plan.getMakespan() + 1;
+    for (std::size_t p = 0; p < pairs_.size(); ++p)
+    {
+        const auto [i, j] = pairs_[p];
+        if (frontier_[p] <= std::max(plan.getArrival(i), plan.getArrival(j)))
+            first = std::min(first, frontier_[p]);
+    }
+    return first;
 }
 
 void ompl_parc::ConflictDetector::invalidate(std::size_t robot, std::size_t timestep)

@@ -6,6 +6,7 @@
 #include "ompl_parc/MultiRobotPlan.h"
 #include "ompl_parc/MultiRobotSpaceInformation.h"
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -29,12 +30,20 @@ namespace ompl_parc
             the plan is conflict-free. Advances the frontiers of the pairs it validates. */
         std::optional<Conflict> findEarliest(const MultiRobotPlan &plan);
 
-        /** \brief Scan \e pairs (indices as by pairIndex()) at timesteps [from, to) in time order; at each
-            timestep check every pair whose frontier has reached it, stop at the first timestep with a
-            conflict and return all conflicts at that timestep in pair order. Pairs whose first robot or
-            second robot is marked in \e skip are not checked. Frontiers of checked pairs advance. */
+        /** \brief Which pairs a scan leaves out: skip(i, j) true means pair (i, j) is not checked. */
+        using PairFilter = std::function<bool(std::size_t, std::size_t)>;
+
+        /** \brief Scan \e pairs (indices as by pairIndex()) at timesteps [from, to) in time order, checking at
+            each timestep every pair whose frontier has reached it. With \e firstTimestepOnly (ARC) it stops at
+            the first timestep with a conflict and returns all conflicts there; otherwise (a P-ARC worker) each
+            pair is scanned to its own first conflict or to \e to, and all those first conflicts are returned
+            in (timestep, pair) order. Pairs \e skip rejects are not checked. Frontiers of checked pairs
+            advance to their first unchecked or conflicting timestep. */
         std::vector<Conflict> scan(const MultiRobotPlan &plan, const std::vector<std::size_t> &pairs, std::size_t from,
-                                   std::size_t to, const std::vector<char> &skip = {});
+                                   std::size_t to, bool firstTimestepOnly, const PairFilter &skip = {});
+
+        /** \brief The first timestep some pair of \e plan still needs checked (makespan + 1 if none). */
+        std::size_t firstUnvalidated(const MultiRobotPlan &plan) const;
 
         /** \brief Robot \e robot's path changed from timestep \e timestep on. */
         void invalidate(std::size_t robot, std::size_t timestep);

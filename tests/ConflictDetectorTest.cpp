@@ -114,7 +114,7 @@ TEST(ConflictDetector, ScanOfAPairSubsetReportsAllConflictsAtTheFirstConflicting
     std::vector<std::size_t> all(detector.getPairCount());
     for (std::size_t p = 0; p < all.size(); ++p)
         all[p] = p;
-    const auto conflicts = detector.scan(plan, all, 0, plan.getMakespan() + 1);
+    const auto conflicts = detector.scan(plan, all, 0, plan.getMakespan() + 1, true);
     ASSERT_EQ(conflicts.size(), 2u);
     EXPECT_EQ(conflicts[0].first, 0u);
     EXPECT_EQ(conflicts[0].second, 1u);
@@ -123,12 +123,12 @@ TEST(ConflictDetector, ScanOfAPairSubsetReportsAllConflictsAtTheFirstConflicting
     EXPECT_EQ(conflicts[0].timestep, conflicts[1].timestep);
     // Skipping robot 0 leaves only the (2, 3) conflict; a horizon before it finds nothing.
     ConflictDetector fresh(si);
-    std::vector<char> skip = {1, 0, 0, 0};
-    const auto skipped = fresh.scan(plan, all, 0, plan.getMakespan() + 1, skip);
+    const auto skipped = fresh.scan(plan, all, 0, plan.getMakespan() + 1, true,
+                                    [](std::size_t i, std::size_t j) { return i == 0 || j == 0; });
     ASSERT_EQ(skipped.size(), 1u);
     EXPECT_EQ(skipped[0].first, 2u);
     ConflictDetector early(si);
-    EXPECT_TRUE(early.scan(plan, all, 0, conflicts[0].timestep).empty());
+    EXPECT_TRUE(early.scan(plan, all, 0, conflicts[0].timestep, true).empty());
     EXPECT_EQ(early.getFrontier(0, 1), conflicts[0].timestep);
 }
 
