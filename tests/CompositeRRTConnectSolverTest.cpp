@@ -8,6 +8,7 @@
 #include <ompl/util/Time.h>
 
 using namespace ompl_parc;
+using ompl_parc::test::validatePatch;
 namespace ob = ompl::base;
 
 namespace
@@ -22,19 +23,6 @@ namespace
         sub.windowStart = 0;
         sub.windowEnd = 2560;
         return sub;
-    }
-
-    /** The patch as a plan of its own team, re-checked by the independent validator. */
-    ValidationReport validatePatch(const MultiRobotProblem &problem, const Subproblem &sub, const Patch &patch)
-    {
-        std::vector<RobotPtr> team;
-        for (std::size_t r : sub.robots)
-            team.push_back(problem.getSpaceInformation()->getRobot(r));
-        MultiRobotProblem local(std::make_shared<MultiRobotSpaceInformation>(team), sub.starts, sub.goals);
-        MultiRobotPlan plan(*local.getSpaceInformation());
-        for (std::size_t k = 0; k < team.size(); ++k)
-            plan.setRobotPath(k, patch.paths[k]);
-        return SolutionValidator(local).validate(plan);
     }
 }  // namespace
 

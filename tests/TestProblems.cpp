@@ -34,3 +34,28 @@ std::vector<double> ompl_parc::test::straightLine(const std::vector<double> &a, 
                                       : a[k] + (b[k] - a[k]) * static_cast<double>(s) / static_cast<double>(steps));
     return flat;
 }
+
+ompl_parc::ValidationReport ompl_parc::test::validatePatch(const MultiRobotProblem &problem, const Subproblem &sub,
+                                                           const Patch &patch)
+{
+    std::vector<RobotPtr> team;
+    for (std::size_t r : sub.robots)
+        team.push_back(problem.getSpaceInformation()->getRobot(r));
+    MultiRobotProblem local(
+        std::make_shared<MultiRobotSpaceInformation>(team, problem.getSpaceInformation()->getResolution()), sub.starts,
+        sub.goals);
+    MultiRobotPlan plan(*local.getSpaceInformation());
+    for (std::size_t k = 0; k < team.size(); ++k)
+        plan.setRobotPath(k, patch.paths[k]);
+    return SolutionValidator(local).validate(plan);
+}
+
+ompl_parc::MultiRobotPlan ompl_parc::test::planFromTimestepPath(const MultiRobotSpaceInformation &si,
+                                                                const ompl::geometric::PathGeometric &path)
+{
+    MultiRobotPlan plan(si);
+    for (std::size_t t = 0; t < path.getStateCount(); ++t)
+        for (std::size_t i = 0; i < si.getRobotCount(); ++i)
+            plan.appendConfig(i, si.getRobotValues(path.getState(t), i));
+    return plan;
+}

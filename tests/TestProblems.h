@@ -3,6 +3,10 @@
 
 #include "ompl_parc/MultiRobotPlan.h"
 #include "ompl_parc/MultiRobotProblem.h"
+#include "ompl_parc/SolutionValidator.h"
+#include "ompl_parc/Subproblem.h"
+
+#include <ompl/geometric/PathGeometric.h>
 
 #include <vector>
 
@@ -25,6 +29,14 @@ namespace ompl_parc::test
 
     /** \brief Straight-line timestep plan of one robot from \e a to \e b (at most 1/resolution per step). */
     std::vector<double> straightLine(const std::vector<double> &a, const std::vector<double> &b, double resolution);
+
+    /** \brief A subproblem's patch as a plan of its own team, re-checked by the independent validator. */
+    ValidationReport validatePatch(const MultiRobotProblem &problem, const Subproblem &sub, const Patch &patch);
+
+    /** \brief A composite path with one state per timestep (as our planners write) back into a plan, without
+        re-timing: waiting timesteps stay. */
+    MultiRobotPlan planFromTimestepPath(const MultiRobotSpaceInformation &si,
+                                        const ompl::geometric::PathGeometric &path);
 }  // namespace ompl_parc::test
 
 #endif

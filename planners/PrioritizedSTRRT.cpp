@@ -1,0 +1,124 @@
+#include "ompl_parc/planners/PrioritizedSTRRT.h"
+
+#include "ompl_parc/MultiRobotPlan.h"
+
+#include <ompl/base/goals/GoalState.h>
+#include <ompl/util/Exception.h>
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+ompl_parc::PrioritizedSTRRT::PrioritizedSTRRT(const ob::SpaceInformationPtr &si)
+    : ob::Planner(si, "PrioritizedSTRRT"), mrsi_(MultiRobotSpaceInformation::get(si, "PrioritizedSTRRT"))
+{
+    specs_.directed = true;
+    declareParam<double>("range", this, &PrioritizedSTRRT::setRange, &PrioritizedSTRRT::getRange, "0.:1.:10000.");
+    declareParam<std::string>("priority_order", this, &PrioritizedSTRRT::setPriorityOrder,
+                              &PrioritizedSTRRT::getPriorityOrder);
+    declareParam<unsigned int>("seed", this, &PrioritizedSTRRT::setSeed, &PrioritizedSTRRT::getSeed);
+    declareParam<std::string>("rewiring", this, &PrioritizedSTRRT::setRewiring, &PrioritizedSTRRT::getRewiring);
+    declareParam<unsigned int>("batch_size", this, &PrioritizedSTRRT::setBatchSize, &PrioritizedSTRRT::getBatchSize,
+                               "1:1:1000000");
+    declareParam<double>("initial_time_bound_factor", this, &PrioritizedSTRRT::setInitialTimeBoundFactor,
+                         &PrioritizedSTRRT::getInitialTimeBoundFactor, "1.0:0.1:100.");
+    declareParam<double>("time_bound_factor_increase", this, &PrioritizedSTRRT::setTimeBoundFactorIncrease,
+                         &PrioritizedSTRRT::getTimeBoundFactorIncrease, "1.01:0.01:100.");
+}
+
+void ompl_parc::PrioritizedSTRRT::updateSettings(const PrioritizedSTRRTSettings &settings)
+{
+    PrioritizedSTRRTSolver check(settings);
+    settings_ = settings;
+}
+
+void ompl_parc::PrioritizedSTRRT::setPriorityOrder(const std::string &order)
+{
+    if (order != "given" && order != "shuffled")
+        throw ompl::Exception(getName(), "priority order must be 'given' or 'shuffled', not '" + order + "'");
+    settings_.shuffle = order == "shuffled";
+}
+
+void ompl_parc::PrioritizedSTRRT::setRewiring(const std::string &rewiring)
+{
+    auto settings = settings_;
+    settings.rewiring = rewiring;
+    updateSettings(settings);
+}
+
+void ompl_parc::PrioritizedSTRRT::setBatchSize(unsigned int size)
+{
+    auto settings = settings_;
+    settings.batchSize = size;
+    updateSettings(settings);
+}
+
+void ompl_parc::PrioritizedSTRRT::setInitialTimeBoundFactor(double factor)
+{
+    auto settings = settings_;
+    settings.initialTimeBoundFactor = factor;
+    updateSettings(settings);
+}
+
+void ompl_parc::PrioritizedSTRRT::setTimeBoundFactorIncrease(double factor)
+{
+    auto settings = settings_;
+    settings.timeBoundFactorIncrease = factor;
+    updateSettings(settings);
+}
+
+ob::PlannerStatus ompl_parc::PrioritizedSTRRT::solve(const ob::PlannerTerminationCondition &ptc)
+{
+    checkValidity();
+    const auto *goal = dynamic_cast<const ob::GoalState *>(pdef_->getGoal().get());
+    if (goal == nullptr)
+    {
+        OMPL_ERROR("%s: the goal must be a GoalState (one configuration per robot)", getName().c_str());
+        return ob::PlannerStatus::UNRECOGNIZED_GOAL_TYPE;
+    }
+    if (pdef_->getStartStateCount() == 0)
+    {
+        OMPL_ERROR("%s: no start state", getName().c_str());
+        return ob::PlannerStatus::INVALID_START;
+    }
+    const ob::State *start = pdef_->getStartState(0);
+    if (const std::string why = mrsi_->explainInvalid(start); !why.empty())
+    {
+        OMPL_ERROR("%s: invalid start: %s", getName().c_str(), why.c_str());
+        return ob::PlannerStatus::INVALID_START;
+    }
+    if (const std::string why = mrsi_->explainInvalid(goal->getState()); !why.empty())
+    {
+        OMPL_ERROR("%s: invalid goal: %s", getName().c_str(), why.c_str());
+        return ob::PlannerStatus::INVALID_GOAL;
+    }
+
+    // The whole problem as one subproblem: every robot, global starts and goals, whole spaces.
+    Subproblem whole;
+    for (std::size_t i = 0; i < mrsi_->getRobotCount(); ++i)
+    {
+        const unsigned int d = mrsi_->getRobot(i)->getDimension();
+        whole.robots.push_back(i);
+        const double *s = mrsi_->getRobotValues(start, i), *g = mrsi_->getRobotValues(goal->getState(), i);
+        whole.starts.emplace_back(s, s + d);
+        whole.goals.emplace_back(g, g + d);
+    }
+    lastSeed_ = seed_ != 0 ? seed_ : static_cast<unsigned int>(rng_.uniformInt(1, std::numeric_limits<int>::max()));
+    Patch patch;
+    solved_ = PrioritizedSTRRTSolver(settings_).solve(*mrsi_, whole, ptc, lastSeed_, patch);
+    if (!solved_)
+        return ob::PlannerStatus::TIMEOUT;
+
+    MultiRobotPlan plan(*mrsi_);
+    for (std::size_t i = 0; i < mrsi_->getRobotCount(); ++i)
+        plan.setRobotPath(i, patch.paths[i]);
+    pdef_->addSolutionPath(std::make_shared<og::PathGeometric>(plan.toPathGeometric(mrsi_)), false, 0., getName());
+    return ob::PlannerStatus::EXACT_SOLUTION;
+}
+
+void ompl_parc::PrioritizedSTRRT::getPlannerData(ob::PlannerData &data) const
+{
+    Planner::getPlannerData(data);
+    data.properties["seed INTEGER"] = std::to_string(lastSeed_);
+    data.properties["priority order"] = getPriorityOrder();
+    data.properties["solved BOOLEAN"] = solved_ ? "1" : "0";
+}

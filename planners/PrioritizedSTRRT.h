@@ -1,0 +1,62 @@
+#ifndef OMPL_PARC_PLANNERS_PRIORITIZED_STRRT_
+#define OMPL_PARC_PLANNERS_PRIORITIZED_STRRT_
+
+#include "ompl_parc/MultiRobotSpaceInformation.h"
+#include "ompl_parc/PrioritizedSTRRTSolver.h"
+
+#include <ompl/base/Planner.h>
+#include <ompl/util/RandomNumbers.h>
+
+#include <cstdint>
+#include <string>
+
+namespace ompl_parc
+{
+    /** \brief Prioritised planning with ST-RRT (PP-ST-RRT) as an OMPL planner for a whole multi-robot problem:
+        the decoupled baseline of the P-ARC paper, and the same PrioritizedSTRRTSolver that ARC uses on its
+        subproblems, applied to all robots, their global starts and goals and their whole spaces.
+
+        Needs a MultiRobotSpaceInformation (throws ompl::Exception otherwise) and a GoalState. The solution
+        is a composite PathGeometric with one state per timestep (MultiRobotPlan::toPathGeometric). */
+    class PrioritizedSTRRT : public ompl::base::Planner
+    {
+      public:
+        explicit PrioritizedSTRRT(const ompl::base::SpaceInformationPtr &si);
+
+        /** \brief INVALID_START / INVALID_GOAL (logging which robot is invalid), EXACT_SOLUTION, or TIMEOUT
+            when prioritised planning fails in this order (it may fail before the termination condition). */
+        ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
+        void getPlannerData(ompl::base::PlannerData &data) const override;
+
+        void setRange(double range) { settings_.range = range; }
+        double getRange() const { return settings_.range; }
+        /** \brief "given" (the team's order) or "shuffled" (from the seed). */
+        void setPriorityOrder(const std::string &order);
+        std::string getPriorityOrder() const { return settings_.shuffle ? "shuffled" : "given"; }
+        /** \brief Seed of the priority shuffle and of all sampling; 0: drawn from OMPL's seed sequence. */
+        void setSeed(unsigned int seed) { seed_ = seed; }
+        unsigned int getSeed() const { return seed_; }
+        /** \brief ST-RRT rewiring: "off" (default, as in the paper), "radius" or "knearest". */
+        void setRewiring(const std::string &rewiring);
+        std::string getRewiring() const { return settings_.rewiring; }
+        void setBatchSize(unsigned int size);
+        unsigned int getBatchSize() const { return settings_.batchSize; }
+        void setInitialTimeBoundFactor(double factor);
+        double getInitialTimeBoundFactor() const { return settings_.initialTimeBoundFactor; }
+        void setTimeBoundFactorIncrease(double factor);
+        double getTimeBoundFactorIncrease() const { return settings_.timeBoundFactorIncrease; }
+
+      private:
+        /** \brief Apply \e settings if PrioritizedSTRRTSolver accepts them (it throws otherwise). */
+        void updateSettings(const PrioritizedSTRRTSettings &settings);
+
+        MultiRobotSpaceInformationPtr mrsi_;
+        PrioritizedSTRRTSettings settings_;
+        unsigned int seed_{0};
+        ompl::RNG rng_;
+        unsigned int lastSeed_{0};
+        bool solved_{false};
+    };
+}  // namespace ompl_parc
+
+#endif

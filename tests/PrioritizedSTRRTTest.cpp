@@ -1,0 +1,248 @@
+#include "TestProblems.h"
+
+#include "ompl_parc/DiscRobot.h"
+#include "ompl_parc/DynamicObstacles.h"
+#include "ompl_parc/PrioritizedSTRRTSolver.h"
+#include "ompl_parc/planners/PrioritizedSTRRT.h"
+#include "ompl_parc/scenarios/Scenarios.h"
+
+#include <gtest/gtest.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/util/Exception.h>
+#include <ompl/util/Time.h>
+
+using namespace ompl_parc;
+using ompl_parc::test::validatePatch;
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+namespace
+{
+    /** The whole of \e problem as a subproblem of all its robots. */
+    Subproblem wholeProblem(const MultiRobotProblem &problem)
+    {
+        Subproblem sub;
+        for (std::size_t i = 0; i < problem.getRobotCount(); ++i)
+        {
+            sub.robots.push_back(i);
+            sub.starts.push_back(problem.getStart(i));
+            sub.goals.push_back(problem.getGoal(i));
+        }
+        return sub;
+    }
+
+    /** Disc 'a' (first priority) runs through a corridor from (-8, 0) to (8, 0); disc 'b' enters it from
+        below through a gap and stops at (0, 0), on a's way. b could arrive after 4 s, but a passes there
+        only after 8 s: b's goal counts only once a has gone by. */
+    MultiRobotProblem corridor()
+    {
+        auto env = std::make_shared<Environment>();
+        env->addBox2D("top", 0., 1., 20., 0.6);
+        env->addBox2D("bottom_left", -5.4, -1., 9.2, 0.6);
+        env->addBox2D("bottom_right", 5.4, -1., 9.2, 0.6);
+        ob::RealVectorBounds bounds(2);
+        bounds.setLow(-10.);
+        bounds.setHigh(10.);
+        std::vector<RobotPtr> team = {std::make_shared<DiscRobot>("a", env, 0.5, bounds),
+                                      std::make_shared<DiscRobot>("b", env, 0.5, bounds)};
+        return MultiRobotProblem(std::make_shared<MultiRobotSpaceInformation>(team), {{-8., 0.}, {0., -4.}},
+                                 {{8., 0.}, {0., 0.}}, "corridor");
+    }
+
+    /** Solve \e problem with the PrioritizedSTRRT planner and validate its plan independently. */
+    void expectPlannerSolves(const MultiRobotProblem &problem, const std::string &order)
+    {
+        PrioritizedSTRRT planner(problem.getSpaceInformation());
+        planner.params().setParam("priority_order", order);
+        planner.params().setParam("seed", "17");
+        const auto pdef = problem.createProblemDefinition();
+        planner.setProblemDefinition(pdef);
+        planner.setup();
+        ASSERT_EQ(planner.solve(ob::timedPlannerTerminationCondition(30.)), ob::PlannerStatus::EXACT_SOLUTION);
+        const auto plan = test::planFromTimestepPath(*problem.getSpaceInformation(),
+                                                     *pdef->getSolutionPath()->as<og::PathGeometric>());
+        const auto report = SolutionValidator(problem).validate(plan);
+        EXPECT_TRUE(report.valid) << report.message;
+    }
+}  // namespace
+
+TEST(PrioritizedSTRRT, SolvesMobileCross4And8AsAPlanner)
+{
+    expectPlannerSolves(scenarios::createMobileCross(4), "given");
+    expectPlannerSolves(scenarios::createMobileCross(8), "shuffled");
+}
+
+TEST(PrioritizedSTRRTSolver, SolvesMobileCross4And8AsSubproblems)
+{
+    const PrioritizedSTRRTSolver solver;
+    EXPECT_EQ(solver.getName(), "pp-st-rrt");
+    for (std::size_t robots : {4, 8})
+    {
+        const auto problem = scenarios::createMobileCross(robots);
+        const auto sub = wholeProblem(problem);
+        Patch patch;
+        ASSERT_TRUE(
+            solver.solve(*problem.getSpaceInformation(), sub, ob::timedPlannerTerminationCondition(30.), 21, patch));
+        ASSERT_EQ(patch.paths.size(), robots);
+        for (const auto &path : patch.paths)
+            EXPECT_EQ(path.size(), patch.paths.front().size());
+        const auto report = validatePatch(problem, sub, patch);
+        EXPECT_TRUE(report.valid) << report.message;
+    }
+}
+
+TEST(PrioritizedSTRRTSolver, SolvesALocalSubproblemOfMobileCross8InsideItsBounds)
+{
+    // Robots 2 and 3 swap on their line (y = -2.5) inside a local band; the others are not in the team.
+    const auto problem = scenarios::createMobileCross(8);
+    Subproblem sub;
+    sub.robots = {2, 3};
+    sub.starts = {problem.getStart(2), problem.getStart(3)};
+    sub.goals = {problem.getGoal(2), problem.getGoal(3)};
+    for (std::size_t k = 0; k < 2; ++k)
+    {
+        ob::RealVectorBounds b = problem.getSpaceInformation()->getRobot(2)->getBounds();
+        b.setLow(1, -4.);
+        b.setHigh(1, -1.);
+        sub.bounds.push_back(b);
+    }
+    Patch patch;
+    ASSERT_TRUE(PrioritizedSTRRTSolver().solve(*problem.getSpaceInformation(), sub,
+                                               ob::timedPlannerTerminationCondition(30.), 4, patch));
+    for (const auto &path : patch.paths)
+        for (std::size_t k = 1; k < path.size(); k += 2)
+        {
+            EXPECT_GE(path[k], -4.);
+            EXPECT_LE(path[k], -1.);
+        }
+    const auto report = validatePatch(problem, sub, patch);
+    EXPECT_TRUE(report.valid) << report.message;
+}
+
+TEST(PrioritizedSTRRTSolver, WaitsUntilItsGoalIsSafeToHold)
+{
+    const auto problem = corridor();
+    const auto sub = wholeProblem(problem);
+    Patch patch;
+    ASSERT_TRUE(PrioritizedSTRRTSolver().solve(*problem.getSpaceInformation(), sub,
+                                               ob::timedPlannerTerminationCondition(30.), 8, patch));
+    const auto report = validatePatch(problem, sub, patch);
+    EXPECT_TRUE(report.valid) << report.message;
+
+    // b's arrival (its first timestep at the goal for good) is after a's last contact with b's goal.
+    const auto &a = patch.paths[0], &b = patch.paths[1];
+    std::size_t arrival = b.size() / 2 - 1;
+    while (arrival > 0 && b[2 * (arrival - 1)] == 0. && b[2 * (arrival - 1) + 1] == 0.)
+        --arrival;
+    std::size_t lastContact = 0;
+    for (std::size_t t = 0; t < a.size() / 2; ++t)
+        if (std::hypot(a[2 * t], a[2 * t + 1]) < 1.)
+            lastContact = t;
+    EXPECT_GT(lastContact, 4 * 128u) << "the naive arrival (4 s) would have been hit";
+    EXPECT_GT(arrival, lastContact);
+}
+
+TEST(PrioritizedSTRRTSolver, EarliestHoldScansTheEarlierRobotsPaths)
+{
+    const auto problem = corridor();
+    const auto &si = *problem.getSpaceInformation();
+    DynamicObstacles obstacles(si.getRobot(1), 128.);
+    obstacles.addPath(*si.getRobot(0), test::straightLine({-8., 0.}, {8., 0.}, 128.));
+    const std::vector<double> goal = {0., 0.};
+    // a touches b's goal while |x| < 1, i.e. until it has covered 9 of its 16 units.
+    EXPECT_EQ(obstacles.earliestHold(goal.data()), std::optional<std::size_t>(9 * 128));
+    const std::vector<double> far = {0., -4.};
+    EXPECT_EQ(obstacles.earliestHold(far.data()), std::optional<std::size_t>(0));
+    const std::vector<double> blocked = {7.5, 0.};  // next to a's goal, forever
+    EXPECT_FALSE(obstacles.earliestHold(blocked.data()).has_value());
+    const std::vector<double> inWall = {0., 1.};
+    EXPECT_FALSE(obstacles.earliestHold(inWall.data()).has_value());
+}
+
+TEST(PrioritizedSTRRTSolver, APermanentlyBlockedGoalFailsAtOnce)
+{
+    // b's goal overlaps a's goal: after a arrives it can never be held. Fails without waiting for the limit.
+    const auto problem = test::twoDiscs({-5., 0.}, {5., 0.}, {0., -5.}, {5.5, 0.});
+    Patch patch;
+    const auto start = ompl::time::now();
+    EXPECT_FALSE(PrioritizedSTRRTSolver().solve(*problem.getSpaceInformation(), wholeProblem(problem),
+                                                ob::timedPlannerTerminationCondition(30.), 1, patch));
+    EXPECT_LT(ompl::time::seconds(ompl::time::now() - start), 5.);
+
+    // For a whole problem, a goal blocked for good by an earlier robot means the goals overlap.
+    PrioritizedSTRRT planner(problem.getSpaceInformation());
+    planner.setProblemDefinition(problem.createProblemDefinition());
+    EXPECT_EQ(planner.solve(ob::timedPlannerTerminationCondition(30.)), ob::PlannerStatus::INVALID_GOAL);
+}
+
+TEST(PrioritizedSTRRT, HonoursA10msTerminationCondition)
+{
+    const auto problem = scenarios::createMobileCross(8);
+    PrioritizedSTRRT planner(problem.getSpaceInformation());
+    planner.setProblemDefinition(problem.createProblemDefinition());
+    planner.setup();
+    auto start = ompl::time::now();
+    planner.solve(ob::timedPlannerTerminationCondition(0.01));
+    EXPECT_LT(ompl::time::seconds(ompl::time::now() - start), 0.2);
+
+    // An impossible subproblem (both robots boxed into one thin strip, head-on) within 10 ms.
+    auto sub = wholeProblem(scenarios::createMobileCross(4));
+    sub.robots = {0, 1};
+    sub.starts.resize(2);
+    sub.goals.resize(2);
+    for (std::size_t k = 0; k < 2; ++k)
+    {
+        ob::RealVectorBounds b(2);
+        b.setLow(0, -10.);
+        b.setHigh(0, 10.);
+        b.setLow(1, -2.6);
+        b.setHigh(1, -2.4);
+        sub.bounds.push_back(b);
+    }
+    Patch patch;
+    start = ompl::time::now();
+    EXPECT_FALSE(PrioritizedSTRRTSolver().solve(*problem.getSpaceInformation(), sub,
+                                                ob::timedPlannerTerminationCondition(0.01), 1, patch));
+    EXPECT_LT(ompl::time::seconds(ompl::time::now() - start), 0.2);
+}
+
+TEST(PrioritizedSTRRTSolver, SameSeedGivesTheSamePatch)
+{
+    const auto problem = scenarios::createMobileCross(4);
+    const auto sub = wholeProblem(problem);
+    PrioritizedSTRRTSettings settings;
+    settings.shuffle = true;
+    const PrioritizedSTRRTSolver solver(settings);
+    const auto &si = *problem.getSpaceInformation();
+    Patch a, b, c;
+    ASSERT_TRUE(solver.solve(si, sub, ob::timedPlannerTerminationCondition(30.), 11, a));
+    ASSERT_TRUE(solver.solve(si, sub, ob::timedPlannerTerminationCondition(30.), 11, b));
+    ASSERT_TRUE(solver.solve(si, sub, ob::timedPlannerTerminationCondition(30.), 12, c));
+    EXPECT_EQ(a.paths, b.paths);
+    EXPECT_NE(a.paths, c.paths);
+    EXPECT_EQ(solver.priorityOrder(4, 11), solver.priorityOrder(4, 11));
+    EXPECT_TRUE(validatePatch(problem, sub, a).valid);
+}
+
+TEST(PrioritizedSTRRT, RejectsBadInputsClearly)
+{
+    const auto plain = std::make_shared<ob::SpaceInformation>(std::make_shared<ob::RealVectorStateSpace>(2));
+    EXPECT_THROW(PrioritizedSTRRT{plain}, ompl::Exception);
+
+    // Overlapping starts name the robots; a goal in the wall names the robot.
+    const auto clash = test::twoDiscs({0., 0.}, {5., 5.}, {0.5, 0.}, {-5., -5.});
+    PrioritizedSTRRT planner(clash.getSpaceInformation());
+    planner.setProblemDefinition(clash.createProblemDefinition());
+    EXPECT_EQ(planner.solve(ob::timedPlannerTerminationCondition(1.)), ob::PlannerStatus::INVALID_START);
+    const auto wall = test::twoDiscs({-5., 0.}, {0., 0.}, {5., 0.}, {5., 5.}, true);
+    PrioritizedSTRRT walled(wall.getSpaceInformation());
+    walled.setProblemDefinition(wall.createProblemDefinition());
+    EXPECT_EQ(walled.solve(ob::timedPlannerTerminationCondition(1.)), ob::PlannerStatus::INVALID_GOAL);
+
+    EXPECT_THROW(planner.setPriorityOrder("random"), ompl::Exception);
+    EXPECT_THROW(planner.setRewiring("sometimes"), ompl::Exception);
+    EXPECT_THROW(planner.setTimeBoundFactorIncrease(0.5), ompl::Exception);
+    for (const char *name : {"range", "priority_order", "seed", "rewiring", "batch_size", "initial_time_bound_factor",
+                             "time_bound_factor_increase"})
+        EXPECT_TRUE(planner.params().hasParam(name)) << name;
+}
