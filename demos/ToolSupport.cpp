@@ -1,7 +1,9 @@
 #include "ToolSupport.h"
 
 #include "ompl_parc/planners/ARC.h"
+#include "ompl_parc/planners/ORPARC.h"
 #include "ompl_parc/planners/PARC.h"
+#include "ompl_parc/planners/PrioritizedSTRRT.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
@@ -32,6 +34,10 @@ namespace
         static const std::map<std::string, ompl::base::PlannerAllocator> table = {
             {"arc", [](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<ompl_parc::ARC>(si); }},
             {"parc", [](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<ompl_parc::PARC>(si); }},
+            {"orparc",
+             [](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<ompl_parc::ORPARC>(si); }},
+            {"pp-st-rrt", [](const ompl::base::SpaceInformationPtr &si)
+             { return std::make_shared<ompl_parc::PrioritizedSTRRT>(si); }},
             {"rrtconnect", [](const ompl::base::SpaceInformationPtr &si)
              { return std::make_shared<ompl::geometric::RRTConnect>(si); }},
         };

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 ompl_parc::ConflictBatch::ConflictBatch(bool optimistic, std::size_t capacity, std::size_t robots)
-  : optimistic_(optimistic), capacity_(std::max<std::size_t>(capacity, 1)), inBatch_(robots, 0), involved_(robots, 0)
+    : optimistic_(optimistic), capacity_(std::max<std::size_t>(capacity, 1)), inBatch_(robots, 0), involved_(robots, 0)
 {
 }
 

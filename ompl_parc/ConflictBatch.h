@@ -36,14 +36,8 @@ namespace ompl_parc
         /** \brief Offer the next conflict in temporal order with its robot set; true if accepted. */
         bool offer(const Conflict &conflict, std::vector<std::size_t> team);
 
-        bool full() const
-        {
-            return entries_.size() >= capacity_;
-        }
-        const std::vector<BatchEntry> &getEntries() const
-        {
-            return entries_;
-        }
+        bool full() const { return entries_.size() >= capacity_; }
+        const std::vector<BatchEntry> &getEntries() const { return entries_; }
         bool skipPair(std::size_t i, std::size_t j) const;
 
       private:

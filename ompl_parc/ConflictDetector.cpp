@@ -55,7 +55,8 @@ std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRo
     // Bodies are computed once per robot and timestep, only for robots that some active pair needs.
     std::vector<CollisionBody> bodies(robots_);
     std::vector<std::size_t> stamp(robots_, std::numeric_limits<std::size_t>::max());
-    const auto body = [&](std::size_t robot, std::size_t step) -> const CollisionBody & {
+    const auto body = [&](std::size_t robot, std::size_t step) -> const CollisionBody &
+    {
         if (stamp[robot] != step)
         {
             si_.getRobot(robot)->computeBody(plan.getConfig(robot, step), bodies[robot]);

@@ -39,9 +39,7 @@ namespace ompl_parc
         using Attempt = std::function<std::optional<Result>(std::size_t, unsigned int,
                                                             const ompl::base::PlannerTerminationCondition &)>;
 
-        OrTaskRunner(WorkerPool &pool, bool localOr) : pool_(pool), localOr_(localOr)
-        {
-        }
+        OrTaskRunner(WorkerPool &pool, bool localOr) : pool_(pool), localOr_(localOr) {}
 
         /** \brief Run tasks 0..tasks-1; an unsolved task (the outer condition fired) has no result. */
         std::vector<std::optional<Result>> run(std::size_t tasks, const ompl::base::PlannerTerminationCondition &ptc,
@@ -57,7 +55,8 @@ namespace ompl_parc
             unsigned int attempts = 0, cancelled = 0;
 
             // Under the lock: the next task this worker should attempt, or none.
-            const auto pick = [&]() -> std::optional<std::size_t> {
+            const auto pick = [&]() -> std::optional<std::size_t>
+            {
                 if (next < tasks)
                     return next++;
                 if (!localOr_)
@@ -69,36 +68,37 @@ namespace ompl_parc
                 return best;
             };
 
-            statistics.workerCpu = pool_.run([&](unsigned int) {
-                while (!ptc && !pool_.aborted())
+            statistics.workerCpu = pool_.run(
+                [&](unsigned int)
                 {
-                    std::size_t task;
-                    unsigned int index;
+                    while (!ptc && !pool_.aborted())
                     {
+                        std::size_t task;
+                        unsigned int index;
+                        {
+                            std::lock_guard<std::mutex> lock(mutex);
+                            const auto chosen = pick();
+                            if (!chosen)
+                                return;
+                            task = *chosen;
+                            index = started[task]++;
+                            ++running[task];
+                            ++attempts;
+                        }
+                        const ompl::base::PlannerTerminationCondition stop(
+                            [&ptc, &solved, task, this] { return solved[task].load() || pool_.aborted() || ptc(); });
+                        std::optional<Result> result = attempt(task, index, stop);
                         std::lock_guard<std::mutex> lock(mutex);
-                        const auto chosen = pick();
-                        if (!chosen)
-                            return;
-                        task = *chosen;
-                        index = started[task]++;
-                        ++running[task];
-                        ++attempts;
+                        --running[task];
+                        if (result && !solved[task])
+                        {
+                            results[task] = std::move(result);
+                            solved[task] = true;
+                        }
+                        else if (solved[task])
+                            ++cancelled;
                     }
-                    const ompl::base::PlannerTerminationCondition stop([&ptc, &solved, task, this] {
-                        return solved[task].load() || pool_.aborted() || ptc();
-                    });
-                    std::optional<Result> result = attempt(task, index, stop);
-                    std::lock_guard<std::mutex> lock(mutex);
-                    --running[task];
-                    if (result && !solved[task])
-                    {
-                        results[task] = std::move(result);
-                        solved[task] = true;
-                    }
-                    else if (solved[task])
-                        ++cancelled;
-                }
-            });
+                });
             statistics.attempts += attempts;
             statistics.cancelled += cancelled;
             return results;

@@ -44,25 +44,27 @@ std::vector<double> ompl_parc::WorkerPool::run(const std::function<void(unsigned
     stage->cpu.assign(workers_, 0.);
     stage_ = stage;
     for (unsigned int w = 0; w < workers_; ++w)
-        boost::asio::post(*pool_, [stage, w, &body] {
-            const double start = StageClock::threadCpu();
-            try
-            {
-                body(w);
-            }
-            catch (...)
-            {
-                std::lock_guard<std::mutex> lock(stage->mutex);
-                if (!stage->error)
-                    stage->error = std::current_exception();
-                stage->aborted = true;
-            }
-            const double cpu = StageClock::threadCpu() - start;
-            std::lock_guard<std::mutex> lock(stage->mutex);
-            stage->cpu[w] = cpu;
-            if (--stage->running == 0)
-                stage->done.notify_all();
-        });
+        boost::asio::post(*pool_,
+                          [stage, w, &body]
+                          {
+                              const double start = StageClock::threadCpu();
+                              try
+                              {
+                                  body(w);
+                              }
+                              catch (...)
+                              {
+                                  std::lock_guard<std::mutex> lock(stage->mutex);
+                                  if (!stage->error)
+                                      stage->error = std::current_exception();
+                                  stage->aborted = true;
+                              }
+                              const double cpu = StageClock::threadCpu() - start;
+                              std::lock_guard<std::mutex> lock(stage->mutex);
+                              stage->cpu[w] = cpu;
+                              if (--stage->running == 0)
+                                  stage->done.notify_all();
+                          });
     std::unique_lock<std::mutex> lock(stage->mutex);
     stage->done.wait(lock, [&stage] { return stage->running == 0; });
     if (stage->error)

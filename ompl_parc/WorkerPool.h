@@ -25,10 +25,7 @@ namespace ompl_parc
         WorkerPool(const WorkerPool &) = delete;
         WorkerPool &operator=(const WorkerPool &) = delete;
 
-        unsigned int getWorkerCount() const
-        {
-            return workers_;
-        }
+        unsigned int getWorkerCount() const { return workers_; }
 
         /** \brief Run \e body(worker) on every worker; returns per-worker CPU seconds of this stage. */
         std::vector<double> run(const std::function<void(unsigned int)> &body);

@@ -1,6 +1,7 @@
 #include "ompl_parc/planners/ArcPlannerBase.h"
 
 #include "ompl_parc/CompositeRRTConnectSolver.h"
+#include "ompl_parc/PrioritizedSTRRTSolver.h"
 #include "ompl_parc/SeededRealVectorSampler.h"
 #include "ompl_parc/StageClock.h"
 
@@ -124,7 +125,18 @@ void ompl_parc::ArcPlannerBase::invalidateState()
 
 std::vector<ompl_parc::SubproblemSolverPtr> ompl_parc::ArcPlannerBase::makeHierarchy() const
 {
-    return {std::make_shared<CompositeRRTConnectSolver>()};
+    const auto prioritized = std::make_shared<PrioritizedSTRRTSolver>();
+    const auto composite = std::make_shared<CompositeRRTConnectSolver>();
+    switch (settings_.solvers)
+    {
+        case ArcSettings::Solvers::COMPOSITE:
+            return {composite};
+        case ArcSettings::Solvers::PRIORITIZED:
+            return {prioritized};
+        case ArcSettings::Solvers::HIERARCHY:
+            break;
+    }
+    return {prioritized, composite};
 }
 
 void ompl_parc::ArcPlannerBase::clear()
@@ -187,6 +199,22 @@ ob::PlannerStatus ompl_parc::ArcPlannerBase::solve(const ob::PlannerTerminationC
 {
     checkValidity();
     statusMessage_.clear();
+    try
+    {
+        return solveStages(ptc);
+    }
+    catch (const std::exception &e)
+    {
+        // A failing stage (e.g. a worker task that threw; all workers are joined by then) ends the solve
+        // with its reason instead of unwinding through the caller's planning loop.
+        statusMessage_ = e.what();
+        OMPL_ERROR("%s: %s", getName().c_str(), e.what());
+        return ob::PlannerStatus(ob::PlannerStatus::CRASH);
+    }
+}
+
+ob::PlannerStatus ompl_parc::ArcPlannerBase::solveStages(const ob::PlannerTerminationCondition &ptc)
+{
     if (!problem_)
         if (auto bad = readProblem())
             return *bad;

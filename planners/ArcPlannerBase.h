@@ -29,7 +29,8 @@ namespace ompl_parc
         declared ArcSettings parameters, the plan being repaired, conflict frontiers and the repair cache.
 
         solve() follows OMPL's conventions: it checks the start and goal (INVALID_START / INVALID_GOAL, the
-        reason naming the robot in getStatusMessage() and the log), runs the initial stage
+        reason naming the robot in getStatusMessage() and the log; CRASH with the reason if a stage throws),
+        runs the initial stage
         (computeInitialPlans()) and conflict resolution (resolveConflicts()) until the plan is conflict-free
         (EXACT_SOLUTION, added to the ProblemDefinition as a composite path with one state per timestep) or
         the termination condition fires (TIMEOUT). A later solve() continues where the last one stopped;
@@ -109,9 +110,11 @@ namespace ompl_parc
         ArcStatistics statistics_;
         std::string statusMessage_;
 
-      private:
         /** \brief Build problem_ from the ProblemDefinition; returns the status to report if it is bad. */
         std::optional<ompl::base::PlannerStatus> readProblem();
+
+      private:
+        ompl::base::PlannerStatus solveStages(const ompl::base::PlannerTerminationCondition &ptc);
         void invalidateState();
     };
 }  // namespace ompl_parc

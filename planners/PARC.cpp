@@ -35,6 +35,7 @@ void ompl_parc::PARC::setWorkers(unsigned int workers)
     if (workers == 0)
         throw ompl::Exception(getName(), "workers must be at least 1");
     workers_ = workers;
+    batchDetector_.reset();
     pool_.reset();
 }
 
@@ -43,13 +44,14 @@ void ompl_parc::PARC::setHorizon(unsigned int horizon)
     if (horizon == 0)
         throw ompl::Exception(getName(), "horizon must be at least 1 timestep");
     horizon_ = horizon;
+    batchDetector_.reset();
 }
 
 void ompl_parc::PARC::clear()
 {
     ArcPlannerBase::clear();
     parallel_ = ParcStatistics();
-    workerPairs_.clear();
+    batchDetector_.reset();
 }
 
 ompl_parc::WorkerPool &ompl_parc::PARC::pool()
@@ -69,18 +71,20 @@ bool ompl_parc::PARC::computeInitialPlans(const ob::PlannerTerminationCondition 
     const std::size_t n = mrsi_->getRobotCount();
     OrTaskStatistics stats;
     const auto paths = OrTaskRunner<std::vector<double>>(pool(), localOr_)
-                           .run(robots.size(), ptc,
-                                [&](std::size_t task, unsigned int attempt,
-                                    const ob::PlannerTerminationCondition &stop) -> std::optional<std::vector<double>> {
-                                    const std::size_t r = robots[task];
-                                    // Attempt 0 uses ARC's seed for this robot; extra OR attempts new ones.
-                                    const auto seed = mixSeed(effectiveSeed_, r + n * attempt);
-                                    std::vector<double> path;
-                                    if (!planner.plan(r, stop, seed, path))
-                                        return std::nullopt;
-                                    return path;
-                                },
-                                stats);
+                           .run(
+                               robots.size(), ptc,
+                               [&](std::size_t task, unsigned int attempt,
+                                   const ob::PlannerTerminationCondition &stop) -> std::optional<std::vector<double>>
+                               {
+                                   const std::size_t r = robots[task];
+                                   // Attempt 0 uses ARC's seed for this robot; extra OR attempts new ones.
+                                   const auto seed = mixSeed(effectiveSeed_, r + n * attempt);
+                                   std::vector<double> path;
+                                   if (!planner.plan(r, stop, seed, path))
+                                       return std::nullopt;
+                                   return path;
+                               },
+                               stats);
     parallel_.initialAttempts += stats.attempts;
     parallel_.cancelledInitialAttempts += stats.cancelled;
     parallel_.projectedInitial += largest(stats.workerCpu);
@@ -96,61 +100,23 @@ bool ompl_parc::PARC::computeInitialPlans(const ob::PlannerTerminationCondition 
     return all;
 }
 
-std::vector<ompl_parc::BatchEntry> ompl_parc::PARC::detectBatch(const ob::PlannerTerminationCondition &ptc)
-{
-    const unsigned int w = pool().getWorkerCount();
-    if (workerPairs_.size() != w)
-    {
-        workerPairs_.assign(w, {});
-        for (std::size_t p = 0; p < detector_->getPairCount(); ++p)
-            workerPairs_[p % w].push_back(p);  // round-robin, as in the paper
-    }
-    ConflictBatch batch(optimistic_, w, mrsi_->getRobotCount());
-    const auto skip = [&batch](std::size_t i, std::size_t j) { return batch.skipPair(i, j); };
-    const std::size_t makespan = plan_.getMakespan();
-    std::vector<std::vector<Conflict>> found(w);
-    for (std::size_t from = detector_->firstUnvalidated(plan_); from <= makespan && !batch.full() && !ptc;
-         from += horizon_)
-    {
-        const std::size_t to = std::min(from + horizon_, makespan + 1);
-        const auto cpu = pool().run([&](unsigned int worker) {
-            found[worker] = detector_->scan(plan_, workerPairs_[worker], from, to, false, skip);
-        });
-        // The coordinator merges the candidates in temporal order and grows the batch.
-        const double mergeStart = StageClock::threadCpu();
-        std::vector<Conflict> candidates;
-        for (const auto &f : found)
-            candidates.insert(candidates.end(), f.begin(), f.end());
-        std::sort(candidates.begin(), candidates.end());
-        for (const Conflict &c : candidates)
-        {
-            if (batch.full())
-                break;
-            auto team = cache_.expand(c, settings_.window);
-            const bool grown = team.size() > 2;
-            if (batch.offer(c, std::move(team)))
-                statistics_.teamGrowths += grown ? 1 : 0;
-        }
-        parallel_.projectedDetection += largest(cpu) + (StageClock::threadCpu() - mergeStart);
-    }
-    return batch.getEntries();
-}
-
 bool ompl_parc::PARC::repairBatch(const std::vector<BatchEntry> &batch, const ob::PlannerTerminationCondition &ptc)
 {
     // Attempt 0 of the k-th conflict uses the seed ARC would use for it; extra OR attempts derive new ones.
     const unsigned int first = statistics_.conflicts;
     OrTaskStatistics stats;
-    const auto repairs = OrTaskRunner<Repair>(pool(), localOr_)
-                             .run(batch.size(), ptc,
-                                  [&](std::size_t task, unsigned int attempt, const ob::PlannerTerminationCondition &stop) {
-                                      auto seed = mixSeed(effectiveSeed_, 0x10000 + first + task + 1);
-                                      if (attempt > 0)
-                                          seed = mixSeed(seed, attempt);
-                                      return resolver_->resolve(plan_, batch[task].team,
-                                                                batch[task].conflict.timestep, stop, seed);
-                                  },
-                                  stats);
+    const auto repairs =
+        OrTaskRunner<Repair>(pool(), localOr_)
+            .run(
+                batch.size(), ptc,
+                [&](std::size_t task, unsigned int attempt, const ob::PlannerTerminationCondition &stop)
+                {
+                    auto seed = mixSeed(effectiveSeed_, 0x10000 + first + task + 1);
+                    if (attempt > 0)
+                        seed = mixSeed(seed, attempt);
+                    return resolver_->resolve(plan_, batch[task].team, batch[task].conflict.timestep, stop, seed);
+                },
+                stats);
     parallel_.repairAttempts += stats.attempts;
     parallel_.cancelledAttempts += stats.cancelled;
     parallel_.projectedResolution += largest(stats.workerCpu);
@@ -173,7 +139,10 @@ bool ompl_parc::PARC::resolveConflicts(const ob::PlannerTerminationCondition &pt
         std::vector<BatchEntry> batch;
         {
             StageClock clock(statistics_.detectionWall, statistics_.detectionCpu);
-            batch = detectBatch(ptc);
+            if (!batchDetector_)
+                batchDetector_ = std::make_unique<BatchDetector>(*detector_, pool(), horizon_, optimistic_);
+            batch = batchDetector_->detect(plan_, cache_, settings_.window, ptc, parallel_.projectedDetection,
+                                           statistics_.teamGrowths);
         }
         if (batch.empty())
             return !ptc;

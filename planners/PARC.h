@@ -1,7 +1,7 @@
 #ifndef OMPL_PARC_PLANNERS_PARC_
 #define OMPL_PARC_PLANNERS_PARC_
 
-#include "ompl_parc/ConflictBatch.h"
+#include "ompl_parc/BatchDetector.h"
 #include "ompl_parc/WorkerPool.h"
 #include "ompl_parc/planners/ArcPlannerBase.h"
 
@@ -39,39 +39,22 @@ namespace ompl_parc
         void clear() override;
         void getPlannerData(ompl::base::PlannerData &data) const override;
 
-        const ParcStatistics &getParallelStatistics() const
-        {
-            return parallel_;
-        }
+        const ParcStatistics &getParallelStatistics() const { return parallel_; }
 
         /** \name Declared parameters
             @{ */
         void setWorkers(unsigned int workers);
-        unsigned int getWorkers() const
-        {
-            return workers_;
-        }
+        unsigned int getWorkers() const { return workers_; }
         void setHorizon(unsigned int horizon);
-        unsigned int getHorizon() const
-        {
-            return horizon_;
-        }
+        unsigned int getHorizon() const { return horizon_; }
         void setOptimistic(bool optimistic)
         {
             optimistic_ = optimistic;
+            batchDetector_.reset();
         }
-        bool getOptimistic() const
-        {
-            return optimistic_;
-        }
-        void setLocalOr(bool localOr)
-        {
-            localOr_ = localOr;
-        }
-        bool getLocalOr() const
-        {
-            return localOr_;
-        }
+        bool getOptimistic() const { return optimistic_; }
+        void setLocalOr(bool localOr) { localOr_ = localOr; }
+        bool getLocalOr() const { return localOr_; }
         /** @} */
 
       protected:
@@ -79,8 +62,6 @@ namespace ompl_parc
         bool resolveConflicts(const ompl::base::PlannerTerminationCondition &ptc) override;
 
       private:
-        /** \brief The next batch of conflicts (empty: the plan is conflict-free, or \e ptc fired). */
-        std::vector<BatchEntry> detectBatch(const ompl::base::PlannerTerminationCondition &ptc);
         /** \brief Repair \e batch concurrently and splice the patches in batch order; false if \e ptc fired. */
         bool repairBatch(const std::vector<BatchEntry> &batch, const ompl::base::PlannerTerminationCondition &ptc);
         WorkerPool &pool();
@@ -88,7 +69,7 @@ namespace ompl_parc
         unsigned int workers_{1}, horizon_{400};
         bool optimistic_{true}, localOr_{true};
         std::unique_ptr<WorkerPool> pool_;
-        std::vector<std::vector<std::size_t>> workerPairs_;
+        std::unique_ptr<BatchDetector> batchDetector_;
         ParcStatistics parallel_;
     };
 }  // namespace ompl_parc

@@ -111,7 +111,7 @@ ob::PlannerStatus ompl_parc::PrioritizedSTRRT::solve(const ob::PlannerTerminatio
     MultiRobotPlan plan(*mrsi_);
     for (std::size_t i = 0; i < mrsi_->getRobotCount(); ++i)
         plan.setRobotPath(i, patch.paths[i]);
-    pdef_->addSolutionPath(std::make_shared<og::PathGeometric>(plan.toPathGeometric(mrsi_)), false, 0., getName());
+    pdef_->addSolutionPath(plan.toPathGeometric(mrsi_), false, 0., getName());
     return ob::PlannerStatus::EXACT_SOLUTION;
 }
 

@@ -1,0 +1,260 @@
+#include "TestProblems.h"
+
+#include "ompl_parc/BatchDetector.h"
+#include "ompl_parc/SolutionValidator.h"
+#include "ompl_parc/planners/ARC.h"
+#include "ompl_parc/planners/ORPARC.h"
+#include "ompl_parc/planners/PARC.h"
+#include "ompl_parc/scenarios/Scenarios.h"
+
+#include <gtest/gtest.h>
+#include <ompl/util/Exception.h>
+#include <ompl/util/Time.h>
+
+#include <random>
+
+using namespace ompl_parc;
+namespace ob = ompl::base;
+
+namespace
+{
+    /** Random-walk plans of 8 discs started in a 7 x 7 square: many conflicts at all sorts of times. */
+    MultiRobotPlan randomPlan(const MultiRobotSpaceInformation &si, std::mt19937 &rng)
+    {
+        MultiRobotPlan plan(si);
+        std::uniform_real_distribution<double> where(-3.5, 3.5), step(-0.04, 0.04);
+        std::uniform_int_distribution<int> length(50, 400);
+        for (std::size_t r = 0; r < si.getRobotCount(); ++r)
+        {
+            std::vector<double> q = {where(rng), where(rng)}, flat = q;
+            for (int t = length(rng); t > 0; --t)
+            {
+                q[0] += step(rng);
+                q[1] += step(rng);
+                flat.insert(flat.end(), q.begin(), q.end());
+            }
+            plan.setRobotPath(r, flat);
+        }
+        return plan;
+    }
+
+    std::vector<Conflict> allConflicts(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan)
+    {
+        std::vector<Conflict> all;
+        for (std::size_t t = 0; t <= plan.getMakespan(); ++t)
+            for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
+                for (std::size_t j = i + 1; j < plan.getRobotCount(); ++j)
+                    if (si.robotsCollide(i, plan.getConfig(i, t), j, plan.getConfig(j, t)))
+                        all.push_back({i, j, t});
+        return all;
+    }
+
+    bool shares(const Conflict &a, const Conflict &b)
+    {
+        return a.first == b.first || a.first == b.second || a.second == b.first || a.second == b.second;
+    }
+
+    ob::PlannerStatus solveWith(ArcPlannerBase &planner, const MultiRobotProblem &problem, double limit = 60.)
+    {
+        planner.setProblemDefinition(problem.createProblemDefinition());
+        planner.setup();
+        return planner.solve(ob::timedPlannerTerminationCondition(limit));
+    }
+}  // namespace
+
+class BatchDetection : public testing::TestWithParam<std::tuple<unsigned int, unsigned int, bool>>
+{
+};
+
+/* For any W and H: the batch starts with the sequential earliest conflict, is robot-disjoint, holds only real
+   conflicts, and each accepted conflict meets the paper's definition (strict: nothing earlier shares a robot;
+   optimistic: every earlier conflict sharing a robot has its other robot in an earlier accepted conflict). */
+TEST_P(BatchDetection, MatchesTheSequentialScanAndTheDefinitions)
+{
+    const auto [workers, horizon, optimistic] = GetParam();
+    const auto problem = scenarios::createMobileCircle(8);
+    const auto &si = *problem.getSpaceInformation();
+    WorkerPool pool(workers);
+    RepairCache cache;
+    std::mt19937 rng(21);
+    int batches = 0;
+    for (int k = 0; k < 15; ++k)
+    {
+        const auto plan = randomPlan(si, rng);
+        const auto all = allConflicts(si, plan);
+        ConflictDetector detector(si);
+        double projected = 0.;
+        unsigned int growths = 0;
+        const auto batch = BatchDetector(detector, pool, horizon, optimistic)
+                               .detect(plan, cache, 200, ob::plannerNonTerminatingCondition(), projected, growths);
+        ASSERT_EQ(batch.empty(), all.empty());
+        if (batch.empty())
+            continue;
+        ++batches;
+        EXPECT_LE(batch.size(), workers);
+        EXPECT_EQ(batch.front().conflict, all.front());
+        std::vector<int> used(8, 0);
+        for (const auto &entry : batch)
+        {
+            EXPECT_NE(std::find(all.begin(), all.end(), entry.conflict), all.end());
+            for (std::size_t r : entry.team)
+                EXPECT_EQ(used[r]++, 0) << "robot " << r << " in two batch conflicts";
+            for (const auto &earlier : all)
+            {
+                if (!(earlier < entry.conflict) || !shares(earlier, entry.conflict))
+                    continue;
+                ASSERT_TRUE(optimistic) << "strict batch accepted a conflict with an earlier one sharing a robot";
+                const std::size_t other =
+                    (earlier.first == entry.conflict.first || earlier.first == entry.conflict.second) ? earlier.second
+                                                                                                      : earlier.first;
+                const bool explained = std::any_of(
+                    batch.begin(), batch.end(),
+                    [&](const BatchEntry &e)
+                    { return e.conflict < earlier && (e.conflict.first == other || e.conflict.second == other); });
+                EXPECT_TRUE(explained) << "conflict at " << entry.conflict.timestep
+                                       << " not optimistically independent";
+            }
+        }
+        EXPECT_GE(projected, 0.);
+    }
+    EXPECT_GT(batches, 5);
+}
+
+INSTANTIATE_TEST_SUITE_P(WorkersHorizons, BatchDetection,
+                         testing::Combine(testing::Values(1u, 2u, 3u, 4u), testing::Values(1u, 7u, 50u, 400u),
+                                          testing::Bool()),
+                         [](const auto &info)
+                         {
+                             return "W" + std::to_string(std::get<0>(info.param)) + "_H" +
+                                    std::to_string(std::get<1>(info.param)) +
+                                    (std::get<2>(info.param) ? "_optimistic" : "_strict");
+                         });
+
+TEST(Parc, OneWorkerComputesWhatArcComputes)
+{
+    for (const auto &[scenario, profile] :
+         {std::make_pair("mobile_cross", "mobile"), std::make_pair("planar_cross", "planar")})
+    {
+        const auto problem = scenarios::createScenario(scenario, 8);
+        ARC arc(problem.getSpaceInformation());
+        PARC parc(problem.getSpaceInformation());
+        for (ArcPlannerBase *p : {static_cast<ArcPlannerBase *>(&arc), static_cast<ArcPlannerBase *>(&parc)})
+        {
+            p->setProfile(profile);
+            p->setSeed(9);
+            ASSERT_EQ(solveWith(*p, problem), ob::PlannerStatus::EXACT_SOLUTION) << p->getName();
+        }
+        for (std::size_t r = 0; r < 8; ++r)
+            EXPECT_EQ(arc.getPlan().getRobotPath(r), parc.getPlan().getRobotPath(r)) << scenario << " robot " << r;
+        EXPECT_EQ(arc.getStatistics().conflicts, parc.getStatistics().conflicts);
+        EXPECT_TRUE(SolutionValidator(problem).validate(parc.getPlan()).valid);
+    }
+}
+
+class ParcSolves : public testing::TestWithParam<std::tuple<std::string, std::size_t, unsigned int, bool>>
+{
+};
+
+TEST_P(ParcSolves, AndTheIndependentValidatorAgrees)
+{
+    const auto [scenario, robots, workers, optimistic] = GetParam();
+    const auto problem = scenarios::createScenario(scenario, robots);
+    PARC parc(problem.getSpaceInformation());
+    parc.setProfile(scenario == "planar_cross" ? "planar" : "mobile");
+    parc.setWorkers(workers);
+    parc.setOptimistic(optimistic);
+    parc.setSeed(4);
+    ASSERT_EQ(solveWith(parc, problem), ob::PlannerStatus::EXACT_SOLUTION) << parc.getStatusMessage();
+    const auto report = SolutionValidator(problem).validate(parc.getPlan());
+    EXPECT_TRUE(report.valid) << report.message;
+    const auto &s = parc.getParallelStatistics();
+    EXPECT_GT(s.batches, 0u);
+    EXPECT_LE(s.firstBatchSize, workers);
+    EXPECT_GT(s.projectedInitial + s.projectedDetection + s.projectedResolution, 0.);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Scenarios, ParcSolves,
+    testing::Values(std::make_tuple("mobile_cross", 16, 2, true), std::make_tuple("mobile_cross", 16, 4, false),
+                    std::make_tuple("mobile_circle", 8, 2, true), std::make_tuple("mobile_circle", 8, 3, true),
+                    std::make_tuple("planar_cross", 8, 2, true), std::make_tuple("planar_cross", 16, 4, true)),
+    [](const auto &info)
+    {
+        return std::get<0>(info.param) + std::to_string(std::get<1>(info.param)) + "_W" +
+               std::to_string(std::get<2>(info.param)) + (std::get<3>(info.param) ? "" : "_strict");
+    });
+
+TEST(Parc, StopsPromptlyWithEveryWorkerJoinedThenContinues)
+{
+    const auto problem = scenarios::createMobileCircle(12);
+    PARC parc(problem.getSpaceInformation());
+    parc.setWorkers(3);
+    parc.setSeed(2);
+    parc.setProblemDefinition(problem.createProblemDefinition());
+    const auto start = ompl::time::now();
+    EXPECT_EQ(parc.solve(ob::timedPlannerTerminationCondition(0.03)), ob::PlannerStatus::TIMEOUT);
+    EXPECT_LT(ompl::time::seconds(ompl::time::now() - start), 0.03 + test::promptReturn());
+    ASSERT_EQ(parc.solve(ob::timedPlannerTerminationCondition(120.)), ob::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_TRUE(SolutionValidator(problem).validate(parc.getPlan()).valid);
+}
+
+TEST(Parc, BadWorkerAndHorizonSettingsAreClearErrors)
+{
+    const auto problem = scenarios::createMobileCross(4);
+    PARC parc(problem.getSpaceInformation());
+    EXPECT_THROW(parc.setWorkers(0), ompl::Exception);
+    EXPECT_THROW(parc.setHorizon(0), ompl::Exception);
+    EXPECT_THROW(parc.params().setParam("workers", "0"), ompl::Exception);  // OMPL passes setter errors on
+    for (const char *name : {"workers", "horizon", "optimistic", "local_or", "window", "seed"})
+        EXPECT_TRUE(parc.params().hasParam(name)) << name;
+}
+
+class OrParcSolves : public testing::TestWithParam<std::tuple<std::string, std::size_t, unsigned int, unsigned int>>
+{
+};
+
+TEST_P(OrParcSolves, TheWinnerIsValidated)
+{
+    const auto [scenario, robots, instances, workers] = GetParam();
+    const auto problem = scenarios::createScenario(scenario, robots);
+    ORPARC orparc(problem.getSpaceInformation());
+    orparc.setProfile(scenario == "planar_cross" ? "planar" : "mobile");
+    orparc.setInstances(instances);
+    orparc.setWorkers(workers);
+    orparc.setSeed(6);
+    ASSERT_EQ(solveWith(orparc, problem), ob::PlannerStatus::EXACT_SOLUTION) << orparc.getStatusMessage();
+    const auto report = SolutionValidator(problem).validate(orparc.getPlan());
+    EXPECT_TRUE(report.valid) << report.message;
+    ob::PlannerData data(problem.getSpaceInformation());
+    orparc.getPlannerData(data);
+    EXPECT_EQ(data.properties["winner STRING"].rfind("ORPARC#", 0), 0u);
+    // The solution in the ProblemDefinition is the winner's plan.
+    auto *path = orparc.getProblemDefinition()->getSolutionPath()->as<ompl::geometric::PathGeometric>();
+    EXPECT_EQ(path->getStateCount(), orparc.getPlan().getMakespan() + 1);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenarios, OrParcSolves,
+                         testing::Values(std::make_tuple("mobile_cross", 8, 2, 1),
+                                         std::make_tuple("mobile_circle", 8, 2, 2),
+                                         std::make_tuple("planar_cross", 8, 3, 1)),
+                         [](const auto &info)
+                         {
+                             return std::get<0>(info.param) + std::to_string(std::get<1>(info.param)) + "_" +
+                                    std::to_string(std::get<2>(info.param)) + "x" +
+                                    std::to_string(std::get<3>(info.param));
+                         });
+
+TEST(OrParc, InconsistentWorkerBudgetsAreClearErrorsAndTimeoutIsPrompt)
+{
+    const auto problem = scenarios::createMobileCircle(12);
+    ORPARC orparc(problem.getSpaceInformation());
+    EXPECT_THROW(orparc.setInstances(0), ompl::Exception);
+    orparc.setInstances(3);
+    EXPECT_THROW(orparc.setTotalWorkers(4), ompl::Exception);
+    orparc.setTotalWorkers(6);
+    EXPECT_EQ(orparc.getWorkers(), 2u);
+    orparc.setProblemDefinition(problem.createProblemDefinition());
+    const auto start = ompl::time::now();
+    EXPECT_EQ(orparc.solve(ob::timedPlannerTerminationCondition(0.03)), ob::PlannerStatus::TIMEOUT);
+    EXPECT_LT(ompl::time::seconds(ompl::time::now() - start), 0.03 + test::promptReturn());
+}
