@@ -31,17 +31,24 @@ void ompl_parc::CollisionBody::updateBound()
         centerX_ = centerY_ = centerZ_ = boundRadius_ = 0.;
         return;
     }
+    if (n == 1 && spheresOnly_)  // a disc or a single sphere bounds itself exactly
+    {
+        centerX_ = ax_[0];
+        centerY_ = ay_[0];
+        centerZ_ = az_[0];
+        boundRadius_ = radius_[0];
+        return;
+    }
     // Centre of the axis-aligned box around all capsule axes; then the farthest capsule surface.
     double lo[3] = {ax_[0], ay_[0], az_[0]}, hi[3] = {ax_[0], ay_[0], az_[0]};
     for (std::size_t i = 0; i < n; ++i)
     {
-        const double xs[3][2] = {{ax_[i], bx_[i]}, {ay_[i], by_[i]}, {az_[i], bz_[i]}};
-        for (int d = 0; d < 3; ++d)
-            for (double v : xs[d])
-            {
-                lo[d] = std::min(lo[d], v);
-                hi[d] = std::max(hi[d], v);
-            }
+        lo[0] = std::min({lo[0], ax_[i], bx_[i]});
+        hi[0] = std::max({hi[0], ax_[i], bx_[i]});
+        lo[1] = std::min({lo[1], ay_[i], by_[i]});
+        hi[1] = std::max({hi[1], ay_[i], by_[i]});
+        lo[2] = std::min({lo[2], az_[i], bz_[i]});
+        hi[2] = std::max({hi[2], az_[i], bz_[i]});
     }
     centerX_ = 0.5 * (lo[0] + hi[0]);
     centerY_ = 0.5 * (lo[1] + hi[1]);
@@ -49,9 +56,10 @@ void ompl_parc::CollisionBody::updateBound()
     double r = 0.;
     for (std::size_t i = 0; i < n; ++i)
     {
-        const double da = std::hypot(ax_[i] - centerX_, ay_[i] - centerY_, az_[i] - centerZ_);
-        const double db = std::hypot(bx_[i] - centerX_, by_[i] - centerY_, bz_[i] - centerZ_);
-        r = std::max(r, std::max(da, db) + radius_[i]);
+        const double dax = ax_[i] - centerX_, day = ay_[i] - centerY_, daz = az_[i] - centerZ_;
+        const double dbx = bx_[i] - centerX_, dby = by_[i] - centerY_, dbz = bz_[i] - centerZ_;
+        const double far2 = std::max(dax * dax + day * day + daz * daz, dbx * dbx + dby * dby + dbz * dbz);
+        r = std::max(r, std::sqrt(far2) + radius_[i]);
     }
     boundRadius_ = r;
 }

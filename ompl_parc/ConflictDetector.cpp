@@ -68,6 +68,7 @@ std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRo
     std::vector<Conflict> conflicts;
     for (; !active.empty() && !(firstTimestepOnly && !conflicts.empty()); ++t)
     {
+        bool anyDone = false;
         for (Active &a : active)
         {
             if (a.next > t)
@@ -80,12 +81,14 @@ std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRo
             }
             else
                 a.next = t + 1;
+            anyDone = anyDone || a.end <= t;
         }
-        for (const Active &a : active)
-            if (a.end <= t)
-                finished.push_back(a);
-        active.erase(std::remove_if(active.begin(), active.end(), [t](const Active &a) { return a.end <= t; }),
-                     active.end());
+        if (anyDone)  // retire finished pairs (rare: keep the per-timestep loop to one pass)
+        {
+            const auto split = std::partition(active.begin(), active.end(), [t](const Active &a) { return a.end > t; });
+            finished.insert(finished.end(), split, active.end());
+            active.erase(split, active.end());
+        }
     }
     for (const auto *set : {&active, &finished})
         for (const Active &a : *set)

@@ -126,16 +126,23 @@ og::PathGeometricPtr ompl_parc::MultiRobotPlan::toPathGeometric(const MultiRobot
     if (si->getRobotCount() != getRobotCount())
         throw ompl::Exception("MultiRobotPlan", "plan and space information have different team sizes");
     auto path = std::make_shared<og::PathGeometric>(si);
-    ob::State *state = si->allocState();
-    const std::size_t makespan = getMakespan();
-    for (std::size_t t = 0; t <= makespan; ++t)
-    {
-        for (std::size_t i = 0; i < getRobotCount(); ++i)
-            std::copy_n(getConfig(i, t), dimensions_[i], si->getRobotValues(state, i));
-        path->append(state);
-    }
-    si->freeState(state);
+    // The path owns the states we allocate straight into it (append() would clone each one once more).
+    auto &states = path->getStates();
+    states.resize(getMakespan() + 1);
+    allocateStates(*si, 0, states.size(), states.data());
     return path;
+}
+
+void ompl_parc::MultiRobotPlan::allocateStates(const MultiRobotSpaceInformation &si, std::size_t from, std::size_t to,
+                                               ob::State **out) const
+{
+    for (std::size_t t = from; t < to; ++t)
+    {
+        ob::State *state = si.allocState();
+        for (std::size_t i = 0; i < getRobotCount(); ++i)
+            std::copy_n(getConfig(i, t), dimensions_[i], si.getRobotValues(state, i));
+        out[t - from] = state;
+    }
 }
 
 std::vector<std::vector<double>> ompl_parc::MultiRobotPlan::layTeamPath(const MultiRobotSpaceInformation &si,

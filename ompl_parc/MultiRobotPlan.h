@@ -55,6 +55,11 @@ namespace ompl_parc
             OMPL's PathGeometric copies its states, so it is built once, in place). */
         ompl::geometric::PathGeometricPtr toPathGeometric(const MultiRobotSpaceInformationPtr &si) const;
 
+        /** \brief Allocate the composite states of timesteps [from, to) into \e out[0 .. to - from): the
+            piece of toPathGeometric() that several threads can do at once on disjoint ranges. */
+        void allocateStates(const MultiRobotSpaceInformation &si, std::size_t from, std::size_t to,
+                            ompl::base::State **out) const;
+
         /** \brief Lay a composite path on the timestep grid: each segment takes ceil(length x resolution)
             timesteps with all robots moving synchronised; trailing states at a robot's goal are dropped so
             its arrival is when it stops moving. */

@@ -239,8 +239,13 @@ ob::PlannerStatus ompl_parc::ArcPlannerBase::solveStages(const ob::PlannerTermin
         statusMessage_ = "time ran out while resolving conflicts";
         return ob::PlannerStatus(ob::PlannerStatus::TIMEOUT);
     }
-    pdef_->addSolutionPath(plan_.toPathGeometric(mrsi_), false, 0., getName());
+    pdef_->addSolutionPath(buildSolutionPath(), false, 0., getName());
     return ob::PlannerStatus(ob::PlannerStatus::EXACT_SOLUTION);
+}
+
+ompl::geometric::PathGeometricPtr ompl_parc::ArcPlannerBase::buildSolutionPath() const
+{
+    return plan_.toPathGeometric(mrsi_);
 }
 
 void ompl_parc::ArcPlannerBase::applyRepair(const Repair &repair)

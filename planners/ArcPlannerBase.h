@@ -87,6 +87,9 @@ namespace ompl_parc
         /** \brief Detect and repair conflicts until none is left (true) or \e ptc fires (false). */
         virtual bool resolveConflicts(const ompl::base::PlannerTerminationCondition &ptc) = 0;
 
+        /** \brief The solution path handed to the ProblemDefinition (one composite state per timestep). */
+        virtual ompl::geometric::PathGeometricPtr buildSolutionPath() const;
+
         /** \brief Splice \e repair into plan_, pull back the frontiers of its robots, cache its interval. */
         void applyRepair(const Repair &repair);
 

@@ -54,7 +54,7 @@ void ompl_parc::PARC::clear()
     batchDetector_.reset();
 }
 
-ompl_parc::WorkerPool &ompl_parc::PARC::pool()
+ompl_parc::WorkerPool &ompl_parc::PARC::pool() const
 {
     if (!pool_)
         pool_ = std::make_unique<WorkerPool>(workers_);
@@ -155,6 +155,22 @@ bool ompl_parc::PARC::resolveConflicts(const ob::PlannerTerminationCondition &pt
             return false;
     }
     return false;
+}
+
+ompl::geometric::PathGeometricPtr ompl_parc::PARC::buildSolutionPath() const
+{
+    auto path = std::make_shared<ompl::geometric::PathGeometric>(mrsi_);
+    auto &states = path->getStates();
+    states.resize(plan_.getMakespan() + 1);
+    const std::size_t w = pool().getWorkerCount(), chunk = (states.size() + w - 1) / w;
+    pool().run(
+        [&](unsigned int worker)
+        {
+            const std::size_t from = std::min(states.size(), worker * chunk),
+                              to = std::min(states.size(), from + chunk);
+            plan_.allocateStates(*mrsi_, from, to, states.data() + from);
+        });
+    return path;
 }
 
 void ompl_parc::PARC::getPlannerData(ob::PlannerData &data) const

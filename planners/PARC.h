@@ -60,15 +60,18 @@ namespace ompl_parc
       protected:
         bool computeInitialPlans(const ompl::base::PlannerTerminationCondition &ptc) override;
         bool resolveConflicts(const ompl::base::PlannerTerminationCondition &ptc) override;
+        /** \brief The composite solution path, its states allocated by all workers (a large share of the
+            work for long plans of big teams). */
+        ompl::geometric::PathGeometricPtr buildSolutionPath() const override;
 
       private:
         /** \brief Repair \e batch concurrently and splice the patches in batch order; false if \e ptc fired. */
         bool repairBatch(const std::vector<BatchEntry> &batch, const ompl::base::PlannerTerminationCondition &ptc);
-        WorkerPool &pool();
+        WorkerPool &pool() const;
 
         unsigned int workers_{1}, horizon_{400};
         bool optimistic_{true}, localOr_{true};
-        std::unique_ptr<WorkerPool> pool_;
+        mutable std::unique_ptr<WorkerPool> pool_;
         std::unique_ptr<BatchDetector> batchDetector_;
         ParcStatistics parallel_;
     };

@@ -2,7 +2,11 @@
 
 #include <ompl/util/Exception.h>
 
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+
 #include <algorithm>
+#include <cstddef>
+#include <new>
 #include <string>
 
 namespace ob = ompl::base;
@@ -19,6 +23,47 @@ ompl_parc::CompositeStateSpace::CompositeStateSpace(const std::vector<ob::StateS
         addSubspace(space, 1.0);
     }
     lock();
+
+    singleBlock_ = true;
+    std::size_t values = 0;
+    for (const auto &space : robotSpaces)
+    {
+        const auto *rv = dynamic_cast<const ob::RealVectorStateSpace *>(space.get());
+        singleBlock_ = singleBlock_ && rv != nullptr;
+        valueStart_.push_back(values);
+        values += space->getDimension();
+    }
+    const auto align = [](std::size_t bytes)
+    { return (bytes + alignof(std::max_align_t) - 1) / alignof(std::max_align_t) * alignof(std::max_align_t); };
+    componentsOffset_ = align(sizeof(StateType));
+    robotStatesOffset_ = componentsOffset_ + align(sizeof(ob::State *) * robotSpaces.size());
+    valuesOffset_ = robotStatesOffset_ + align(sizeof(ob::RealVectorStateSpace::StateType) * robotSpaces.size());
+    blockSize_ = valuesOffset_ + sizeof(double) * values;
+}
+
+ob::State *ompl_parc::CompositeStateSpace::allocState() const
+{
+    if (!singleBlock_)
+        return ob::CompoundStateSpace::allocState();
+    char *block = static_cast<char *>(::operator new(blockSize_));
+    auto *state = new (block) StateType();
+    state->components = reinterpret_cast<ob::State **>(block + componentsOffset_);
+    auto *robots = reinterpret_cast<ob::RealVectorStateSpace::StateType *>(block + robotStatesOffset_);
+    auto *values = reinterpret_cast<double *>(block + valuesOffset_);
+    for (unsigned int i = 0; i < componentCount_; ++i)
+    {
+        auto *robot = new (robots + i) ob::RealVectorStateSpace::StateType();
+        robot->values = values + valueStart_[i];
+        state->components[i] = robot;
+    }
+    return state;
+}
+
+void ompl_parc::CompositeStateSpace::freeState(ob::State *state) const
+{
+    if (!singleBlock_)
+        return ob::CompoundStateSpace::freeState(state);
+    ::operator delete(static_cast<void *>(state));
 }
 
 ompl_parc::CompositeStateSpacePtr ompl_parc::CompositeStateSpace::createSubspace(

@@ -46,8 +46,20 @@ namespace ompl_parc
         double distance(const ompl::base::State *state1, const ompl::base::State *state2) const override;
         double getMaximumExtent() const override;
 
+        /** \brief When every robot space is a real vector space (always, for our robots), a composite state is
+            one heap block (the compound state, its component pointers, the component states and all values)
+            instead of 2 + 2N blocks: planners and the one-state-per-timestep solution paths of big teams
+            allocate and free these by the hundred thousand. Other spaces use OMPL's layout. */
+        ompl::base::State *allocState() const override;
+        void freeState(ompl::base::State *state) const override;
+
       private:
         void checkRobots(const std::vector<std::size_t> &robots) const;
+
+        /** \brief Single-block layout: whether it applies, byte offsets, and each robot's first value. */
+        bool singleBlock_{false};
+        std::size_t componentsOffset_{0}, robotStatesOffset_{0}, valuesOffset_{0}, blockSize_{0};
+        std::vector<std::size_t> valueStart_;
     };
 }  // namespace ompl_parc
 

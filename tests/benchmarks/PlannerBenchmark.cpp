@@ -98,8 +98,9 @@ namespace
     void printTable()
     {
         std::printf(
-            "\n| scenario | planner | median time (s) | initial | detection | resolution | speedup vs ARC |\n"
-            "|---|---|---|---|---|---|---|\n");
+            "\n| scenario | planner | median wall (s) | initial | detection | resolution | "
+            "projected W-core stages (s) | wall speedup vs ARC | projected speedup vs ARC |\n"
+            "|---|---|---|---|---|---|---|---|---|\n");
         for (const auto &[key, runs] : results())
         {
             if (runs.empty())
