@@ -45,10 +45,12 @@ std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRo
         if (skip && skip(i, j))
             continue;
         const std::size_t end = std::min(std::max(plan.getArrival(i), plan.getArrival(j)), to - 1);
-        if (frontier_[p] <= end && end >= from)
+        // A pair whose frontier lies before \e from has a known conflict (or an unchecked gap) there: it
+        // must not be resumed at \e from, which would declare that stretch conflict-free.
+        if (frontier_[p] >= from && frontier_[p] <= end)
         {
-            active.push_back({p, std::max(frontier_[p], from), end});
-            t = std::min(t, active.back().next);
+            active.push_back({p, frontier_[p], end});
+            t = std::min(t, frontier_[p]);
         }
     }
 

@@ -37,8 +37,9 @@ namespace ompl_parc
             each timestep every pair whose frontier has reached it. With \e firstTimestepOnly (ARC) it stops at
             the first timestep with a conflict and returns all conflicts there; otherwise (a P-ARC worker) each
             pair is scanned to its own first conflict or to \e to, and all those first conflicts are returned
-            in (timestep, pair) order. Pairs \e skip rejects are not checked. Frontiers of checked pairs
-            advance to their first unchecked or conflicting timestep. */
+            in (timestep, pair) order. Pairs \e skip rejects are not checked, nor pairs whose frontier is before
+            \e from (they stop at a known conflict). Frontiers of checked pairs advance to their first
+            unchecked or conflicting timestep: a frontier never passes an unchecked or conflicting timestep. */
         std::vector<Conflict> scan(const MultiRobotPlan &plan, const std::vector<std::size_t> &pairs, std::size_t from,
                                    std::size_t to, bool firstTimestepOnly, const PairFilter &skip = {});
 

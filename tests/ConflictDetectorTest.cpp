@@ -144,3 +144,22 @@ TEST(RepairCache, ExpansionIsTheTransitiveClosureOverOverlappingRepairs)
     EXPECT_EQ(cache.expand({5, 8, 1050}, 20), (std::vector<std::size_t>{5, 7, 8}));
     EXPECT_EQ(cache.expand({4, 6, 10}, 10000), (std::vector<std::size_t>{4, 6}));
 }
+
+TEST(ConflictDetector, ALaterScanNeverResumesAPairPastItsKnownConflict)
+{
+    // Robots 0 and 1 swap head-on; a P-ARC detection round finds their conflict, and the next round (a later
+    // horizon, the conflict deferred) must not mark the stretch before it conflict-free.
+    const auto problem = scenarios::createMobileCross(4);
+    const auto &si = *problem.getSpaceInformation();
+    MultiRobotPlan plan(si);
+    for (std::size_t r = 0; r < 4; ++r)
+        plan.setRobotPath(r, test::straightLine(problem.getStart(r), problem.getGoal(r), 128.));
+    ConflictDetector detector(si);
+    const std::vector<std::size_t> pair = {detector.pairIndex(0, 1)};
+    const auto first = detector.scan(plan, pair, 0, 1400, false);
+    ASSERT_EQ(first.size(), 1u);
+    const std::size_t t = first.front().timestep;
+    EXPECT_EQ(detector.getFrontier(0, 1), t);
+    EXPECT_TRUE(detector.scan(plan, pair, 1400, 1800, false).empty());
+    EXPECT_EQ(detector.getFrontier(0, 1), t);
+}
