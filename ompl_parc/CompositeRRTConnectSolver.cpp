@@ -23,13 +23,10 @@ bool ompl_parc::CompositeRRTConnectSolver::solve(const MultiRobotSpaceInformatio
 {
     if (!subproblem.check(si).empty())
         return false;
-    std::vector<RobotPtr> team;
-    for (std::size_t r : subproblem.robots)
-        team.push_back(si.getRobot(r));
-    auto local = std::make_shared<MultiRobotSpaceInformation>(team, si.getResolution(), subproblem.bounds, seed);
+    const auto local = subproblem.createSpaceInformation(si, seed);
 
     ob::ScopedState<> start(local), goal(local);
-    for (std::size_t k = 0; k < team.size(); ++k)
+    for (std::size_t k = 0; k < subproblem.robots.size(); ++k)
     {
         std::copy(subproblem.starts[k].begin(), subproblem.starts[k].end(), local->getRobotValues(start.get(), k));
         std::copy(subproblem.goals[k].begin(), subproblem.goals[k].end(), local->getRobotValues(goal.get(), k));

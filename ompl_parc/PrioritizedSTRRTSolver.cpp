@@ -97,11 +97,8 @@ bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &
 {
     if (!subproblem.check(si).empty())
         return false;
-    std::vector<RobotPtr> team;
-    for (std::size_t r : subproblem.robots)
-        team.push_back(si.getRobot(r));
-    // Fresh robot spaces with the local bounds and samplers seeded from the task seed.
-    const MultiRobotSpaceInformation local(team, si.getResolution(), subproblem.bounds, seed);
+    const auto local = subproblem.createSpaceInformation(si, seed);
+    const auto &team = local->getRobots();
 
     std::vector<std::vector<double>> paths(team.size());
     std::vector<std::size_t> planned;
@@ -125,7 +122,7 @@ bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &
             stop = ob::plannerOrTerminationCondition(
                 ptc, ob::PlannerTerminationCondition([iterations, cap] { return ++*iterations > cap; }));
         }
-        paths[k] = planRobot(local.getCompositeSpace()->getRobotSpace(k), obstacles, subproblem.starts[k],
+        paths[k] = planRobot(local->getCompositeSpace()->getRobotSpace(k), obstacles, subproblem.starts[k],
                              subproblem.goals[k], *hold, stop, mixSeed(seed, 0x57aa + k));
         if (paths[k].empty())
             return false;

@@ -22,3 +22,12 @@ std::string ompl_parc::Subproblem::check(const MultiRobotSpaceInformation &si) c
     }
     return "";
 }
+
+std::shared_ptr<ompl_parc::MultiRobotSpaceInformation> ompl_parc::Subproblem::createSpaceInformation(
+    const MultiRobotSpaceInformation &si, std::uint_fast32_t seed) const
+{
+    std::vector<RobotPtr> team;
+    for (std::size_t r : robots)
+        team.push_back(si.getRobot(r));
+    return std::make_shared<MultiRobotSpaceInformation>(team, si.getResolution(), bounds, seed);
+}

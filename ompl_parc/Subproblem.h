@@ -4,6 +4,8 @@
 #include <ompl/base/spaces/RealVectorBounds.h>
 
 #include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,6 +31,11 @@ namespace ompl_parc
 
         /** \brief Empty if the subproblem is well formed for the team of \e si, else the reason. */
         std::string check(const MultiRobotSpaceInformation &si) const;
+
+        /** \brief The subproblem's own team SpaceInformation: fresh robot spaces with the local bounds and
+            samplers seeded from \e seed (what every SubproblemSolver plans in). Requires check() to pass. */
+        std::shared_ptr<MultiRobotSpaceInformation> createSpaceInformation(const MultiRobotSpaceInformation &si,
+                                                                           std::uint_fast32_t seed) const;
     };
 
     /** \brief A subproblem's answer: one path per team robot, all with the same number of timesteps,
