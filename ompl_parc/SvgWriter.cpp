@@ -245,18 +245,19 @@ namespace
             out << "\">" << title << "</polygon>\n";
         }
 
-        /** The elements of \e body; \e attributes style them, and with \e frames they are animated over
-            those bodies (which share \e body's layout). */
-        void drawBody(const ompl_parc::CollisionBody &body, const std::string &attributes, const Frames *frames,
-                      std::ostream &out) const
+        /** The elements of \e body in \e colour, solid or as a thin \e outline (a circle's rim, a chain's
+            centre line); \e attributes add a class and style, and with \e frames they are animated over those
+            bodies (which share \e body's layout). */
+        void drawBody(const ompl_parc::CollisionBody &body, const std::string &colour, bool outline,
+                      const std::string &attributes, const Frames *frames, std::ostream &out) const
         {
             for (const auto &[first, last] : chains(body))
             {
                 if (last == first + 1 && isDot(body, first))
                 {
                     out << "<circle cx=\"" << num(body.ax_[first]) << "\" cy=\"" << num(body.ay_[first]) << "\" r=\""
-                        << num(body.radius_[first]) << "\" stroke-width=\"" << num(lineWidth_) << "\" " << attributes
-                        << ">";
+                        << num(body.radius_[first]) << "\" fill=\"" << (outline ? "none" : colour) << "\" stroke=\""
+                        << colour << "\" stroke-width=\"" << num(lineWidth_) << "\" " << attributes << ">";
                     if (frames != nullptr)
                     {
                         animate(
@@ -268,8 +269,9 @@ namespace
                     continue;
                 }
                 out << "<polyline points=\"" << chainPoints(body, first, last) << "\" stroke-width=\""
-                    << num(2. * body.radius_[first])
-                    << "\" stroke-linecap=\"round\" stroke-linejoin=\"round\" fill=\"none\" " << attributes << ">";
+                    << num(outline ? lineWidth_ : 2. * body.radius_[first])
+                    << "\" stroke-linecap=\"round\" stroke-linejoin=\"round\" fill=\"none\" stroke=\"" << colour
+                    << "\" " << attributes << ">";
                 if (frames != nullptr)
                     animate(
                         "points", *frames,
@@ -295,11 +297,9 @@ namespace
             const std::string c = colour(i, problem_.getRobotCount());
             out << "<g class=\"robot\" id=\"robot-" << escape(robot.getName()) << "\">\n<title>"
                 << escape(robot.getName()) << " (" << robot.getKind() << ")</title>\n";
-            // Start: a faded fill; goal: a dashed outline (a polyline's outline is its stroke).
-            drawBody(start, "class=\"start\" fill=\"" + c + "\" stroke=\"" + c + "\" opacity=\"0.3\"", nullptr, out);
-            drawBody(goal,
-                     "class=\"goal\" fill=\"none\" stroke=\"" + c + "\" stroke-dasharray=\"" + num(3. * lineWidth_) +
-                         "\" opacity=\"0.8\"",
+            // Start: faded; goal: a dashed outline.
+            drawBody(start, c, false, "class=\"start\" opacity=\"0.3\"", nullptr, out);
+            drawBody(goal, c, true, "class=\"goal\" stroke-dasharray=\"" + num(3. * lineWidth_) + "\" opacity=\"0.8\"",
                      nullptr, out);
             if (!frames.empty())
             {
@@ -309,7 +309,7 @@ namespace
                     out << num(body.bx_[body.size() - 1]) << "," << num(body.by_[body.size() - 1]) << " ";
                 out << "\"/>\n";
                 if (options_.animate)
-                    drawBody(frames.front(), "class=\"body\" fill=\"" + c + "\" stroke=\"" + c + "\"", &frames, out);
+                    drawBody(frames.front(), c, false, "class=\"body\"", &frames, out);
             }
             out << "</g>\n";
         }

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <regex>
+#include <set>
 
 using namespace ompl_parc;
 
@@ -20,7 +21,8 @@ namespace
         return n;
     }
 
-    /** Well-formed enough for a viewer: one root, every start tag closed in order, quotes balanced. */
+    /** Well-formed enough for a viewer: one root, every start tag closed in order, quotes balanced, no
+        attribute given twice. */
     ::testing::AssertionResult wellFormed(const std::string &svg)
     {
         std::vector<std::string> open;
@@ -35,6 +37,12 @@ namespace
             last = m.position() + m.length();
             if (m[2].length() == 0)
                 continue;  // the XML declaration
+            const std::string attributes = m[3];
+            const std::regex name(R"(([a-zA-Z:-]+)=")");
+            std::set<std::string> names;
+            for (std::sregex_iterator at(attributes.begin(), attributes.end(), name), none; at != none; ++at)
+                if (!names.insert((*at)[1]).second)
+                    return ::testing::AssertionFailure() << "attribute " << (*at)[1] << " repeated at " << m.position();
             if (m[1] == "/")
             {
                 if (open.empty() || open.back() != m[2])
