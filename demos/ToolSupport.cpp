@@ -1,5 +1,6 @@
 #include "ToolSupport.h"
 
+#include "ompl_parc/ScenarioFile.h"
 #include "ompl_parc/planners/ARC.h"
 #include "ompl_parc/planners/ORPARC.h"
 #include "ompl_parc/planners/PARC.h"
@@ -19,6 +20,12 @@ namespace po = boost::program_options;
 
 ompl_parc::MultiRobotProblem ompl_parc::tools::problemFromOptions(const po::variables_map &vm)
 {
+    if (vm.count("scenario-file"))
+    {
+        if (!vm["scenario"].defaulted() || !vm["robots"].defaulted())
+            throw std::invalid_argument("give --scenario-file or --scenario/--robots, not both");
+        return ScenarioFile::read(vm["scenario-file"].as<std::string>());  // checks the endpoints itself
+    }
     MultiRobotProblem problem =
         scenarios::createScenario(vm["scenario"].as<std::string>(), vm["robots"].as<std::size_t>());
     const std::string reason = problem.checkEndpoints();
@@ -58,7 +65,8 @@ void ompl_parc::tools::addProblemOptions(po::options_description &options)
     const std::string names = join(scenarios::scenarioNames());
     options.add_options()("scenario", po::value<std::string>()->default_value("mobile_cross"),
                           ("built-in scenario: " + names).c_str())("robots", po::value<std::size_t>()->default_value(4),
-                                                                   "number of robots");
+                                                                   "number of robots of the built-in scenario")(
+        "scenario-file", po::value<std::string>(), "read the problem from this scenario file (JSON) instead");
 }
 
 std::vector<std::string> ompl_parc::tools::plannerNames()

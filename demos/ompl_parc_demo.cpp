@@ -1,10 +1,13 @@
-/* ompl_parc_demo: solve a built-in multi-robot scenario with one of our planners (or OMPL's RRTConnect over
-   the composite space) and re-check the result with the independent validator.
+/* ompl_parc_demo: solve a built-in multi-robot scenario or a scenario file with one of our planners (or OMPL's
+   RRTConnect over the composite space), re-check the result with the independent validator and optionally
+   draw it (SVG).
    Exit 0: solved and validated; 1: not solved in time (or invalid); 2: bad input. */
+#include "ProgressLine.h"
 #include "ToolSupport.h"
 
 #include "ompl_parc/SolutionFile.h"
 #include "ompl_parc/SolutionValidator.h"
+#include "ompl_parc/SvgWriter.h"
 #include "ompl_parc/planners/ArcPlannerBase.h"
 
 #include <ompl/geometric/PathSimplifier.h>
@@ -61,7 +64,12 @@ int main(int argc, char **argv)
                 "planner parameter key=value (repeatable; declared names, e.g. window=100)")(
                 "seed", po::value<std::uint32_t>()->default_value(1), "random seed")(
                 "time-limit", po::value<double>()->default_value(30.), "planning time limit in seconds")(
-                "out", po::value<std::string>(), "write the solution to this JSON file")("help,h", "show this help");
+                "workers", po::value<unsigned int>(), "worker threads of a parallel planner (its 'workers' parameter)")(
+                "out", po::value<std::string>(), "write the solution to this JSON file")(
+                "picture", po::value<std::string>(),
+                "draw the solution (or, unsolved, the problem) to this SVG file, animated")(
+                "picture-static", "make --picture a static snapshot: starts, goals and traced paths")("help,h",
+                                                                                                      "show this help");
             const auto vm = tools::parse(argc, argv, options);
             if (vm.count("help"))
             {
@@ -79,19 +87,38 @@ int main(int argc, char **argv)
             const auto params =
                 vm.count("param") ? vm["param"].as<std::vector<std::string>>() : std::vector<std::string>{};
             auto planner = tools::createPlanner(vm["planner"].as<std::string>(), si, params);
+            if (vm.count("workers"))
+            {
+                if (!planner->params().hasParam("workers"))
+                    throw std::invalid_argument("--workers needs a parallel planner (parc); '" +
+                                                vm["planner"].as<std::string>() + "' has no 'workers' parameter");
+                if (!planner->params().setParam("workers", std::to_string(vm["workers"].as<unsigned int>())))
+                    throw std::invalid_argument("bad value for --workers (1 to 64)");
+            }
             planner->setProblemDefinition(pdef);
             planner->setup();
 
             std::cout << "scenario   " << problem.getName() << ", " << si->getRobotCount() << " robots\n"
                       << "planner    " << planner->getName() << "\n";
+            tools::ProgressLine progress("planning...");
             const ompl::time::point start = ompl::time::now();
             const auto status = planner->solve(ompl::base::timedPlannerTerminationCondition(timeLimit));
             const double planTime = ompl::time::seconds(ompl::time::now() - start);
+            progress.stop();
             std::cout << "status     " << status.asString() << " after " << std::fixed << std::setprecision(3)
                       << planTime << " s\n";
             printStatistics(*planner);
+            SvgOptions picture;
+            picture.animate = vm.count("picture-static") == 0;
             if (status != ompl::base::PlannerStatus::EXACT_SOLUTION)
+            {
+                if (vm.count("picture"))
+                {
+                    SvgWriter::write(vm["picture"].as<std::string>(), problem, nullptr, picture);
+                    std::cout << "picture    " << vm["picture"].as<std::string>() << " (the problem only)\n";
+                }
                 return static_cast<int>(tools::EXIT_FAILED);
+            }
 
             const MultiRobotPlan plan = planOf(*planner, si, pdef);
             const ValidationReport report = SolutionValidator(problem).validate(plan);
@@ -103,6 +130,11 @@ int main(int argc, char **argv)
             {
                 SolutionFile::write(vm["out"].as<std::string>(), plan, *si);
                 std::cout << "solution   " << vm["out"].as<std::string>() << std::endl;
+            }
+            if (vm.count("picture"))
+            {
+                SvgWriter::write(vm["picture"].as<std::string>(), problem, &plan, picture);
+                std::cout << "picture    " << vm["picture"].as<std::string>() << std::endl;
             }
             return static_cast<int>(report.valid ? tools::EXIT_SOLVED : tools::EXIT_FAILED);
         });

@@ -3,6 +3,7 @@
 # Usage: tools_test.sh BIN_DIR
 set -u
 bin=$1
+scenarios=$(cd "$(dirname "$0")/../demos/scenarios" && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 failures=0
@@ -49,6 +50,40 @@ expect 2 "robots" "$bin/ompl_parc_demo" --robots many
 expect 0 "Usage: ompl_parc_demo" "$bin/ompl_parc_demo" --help
 # A 1 ms limit on a 64-robot composite problem cannot be met: a clean "not solved" exit.
 expect 1 "status     " "$bin/ompl_parc_demo" --scenario mobile_circle --robots 64 --time-limit 0.001
+
+# Scenario files, --workers and pictures.
+expect 0 "validated  yes" "$bin/ompl_parc_demo" --scenario-file "$scenarios/doorway_swap.json" \
+    --out "$tmp/door.json" --picture "$tmp/door.svg"
+expect 0 "^valid: 4 robots" "$bin/ompl_parc_validate" --scenario-file "$scenarios/doorway_swap.json" "$tmp/door.json"
+expect 0 "<animate " cat "$tmp/door.svg"
+expect 0 "validated  yes" "$bin/ompl_parc_demo" --planner parc --workers 2 --robots 8 --picture "$tmp/cross.svg" \
+    --picture-static
+expect 0 'class="trace"' cat "$tmp/cross.svg"
+expect 2 "planner 'arc' has no 'workers' parameter\|'arc' has no 'workers'" "$bin/ompl_parc_demo" --workers 2
+expect 2 "unknown planner 'astar' (valid: arc, orparc, parc, pp-st-rrt, rrtconnect)" \
+    "$bin/ompl_parc_demo" --planner astar
+expect 2 "not both" "$bin/ompl_parc_demo" --scenario mobile_circle --scenario-file "$scenarios/doorway_swap.json"
+expect 2 "cannot open" "$bin/ompl_parc_demo" --scenario-file "$tmp/missing_scenario.json"
+edit() {  # edit OUT PYTHON: write doorway_swap.json changed by the Python statement (on doc) to OUT
+    python3 - "$scenarios/doorway_swap.json" "$1" "$2" <<'PY'
+import json, sys
+doc = json.load(open(sys.argv[1]))
+exec(sys.argv[3])
+json.dump(doc, open(sys.argv[2], "w"))
+PY
+}
+edit "$tmp/radius.json" 'doc["robots"][2]["radius"] = 0'
+expect 2 "robots\[2\].radius must be a positive number" "$bin/ompl_parc_demo" --scenario-file "$tmp/radius.json"
+edit "$tmp/dup.json" 'doc["robots"][1]["name"] = "west_a"'
+expect 2 "robots\[1\].name 'west_a' is already used" "$bin/ompl_parc_demo" --scenario-file "$tmp/dup.json"
+edit "$tmp/wall.json" 'doc["robots"][0]["start"] = [0, 4]'
+expect 2 "start of robot 'west_a' is" "$bin/ompl_parc_validate" --scenario-file "$tmp/wall.json" "$tmp/door.json"
+edit "$tmp/urdf.json" 'doc["robots"][0]["kind"] = "urdf_arm"'
+expect 2 "kind 'urdf_arm' is not supported yet" "$bin/ompl_parc_demo" --scenario-file "$tmp/urdf.json"
+head -c 200 "$scenarios/doorway_swap.json" >"$tmp/cut.json"
+expect 2 "not valid JSON at line" "$bin/ompl_parc_demo" --scenario-file "$tmp/cut.json"
+# Bad input is reported on exactly one line.
+expect 0 "^1$" bash -c "'$bin/ompl_parc_demo' --scenario-file '$tmp/dup.json' 2>&1 | wc -l"
 
 if [ "$failures" -ne 0 ]; then
     echo "$failures tool check(s) failed"

@@ -1,0 +1,387 @@
+#include "ompl_parc/ScenarioFile.h"
+
+#include "ompl_parc/DiscRobot.h"
+#include "ompl_parc/PlanarArm.h"
+
+#include <nlohmann/json.hpp>
+#include <ompl/util/Exception.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+using nlohmann::json;
+
+namespace
+{
+    const char *const FORMAT = "ompl_parc.scenario";
+    constexpr int VERSION = 1;
+    constexpr double DEFAULT_RESOLUTION = 128.;
+
+    [[noreturn]] void fail(const std::string &what)
+    {
+        throw ompl::Exception("ScenarioFile", what);
+    }
+
+    /** Checked access to one JSON document: every helper names the field it looks at in its error. */
+    const json &field(const json &object, const std::string &key, const std::string &where)
+    {
+        if (!object.contains(key))
+            fail(where + ": missing field '" + key + "'");
+        return object.at(key);
+    }
+
+    std::string member(const std::string &where, const std::string &key)
+    {
+        return where.empty() ? key : where + "." + key;
+    }
+
+    void requireObject(const json &value, const std::string &where)
+    {
+        if (!value.is_object())
+            fail(where + " must be an object");
+    }
+
+    /** Rejects fields outside \e allowed, so a misspelt optional field is not silently ignored. */
+    void allowOnly(const json &object, const std::set<std::string> &allowed, const std::string &where)
+    {
+        for (const auto &entry : object.items())
+            if (allowed.count(entry.key()) == 0)
+                fail(where + ": unknown field '" + entry.key() + "'");
+    }
+
+    double number(const json &value, const std::string &where, bool positive = false)
+    {
+        if (!value.is_number() || !std::isfinite(value.get<double>()) || (positive && !(value.get<double>() > 0.)))
+            fail(where + (positive ? " must be a positive number" : " must be a finite number"));
+        return value.get<double>();
+    }
+
+    /** An array of \e count finite numbers (any non-zero count if \e count is 0). */
+    std::vector<double> numbers(const json &value, const std::string &where, std::size_t count)
+    {
+        if (!value.is_array() || (count != 0 && value.size() != count) || value.empty())
+            fail(where + " must be an array of " + (count != 0 ? std::to_string(count) : std::string("some")) +
+                 " numbers");
+        std::vector<double> out;
+        for (std::size_t i = 0; i < value.size(); ++i)
+            out.push_back(number(value[i], where + "[" + std::to_string(i) + "]"));
+        return out;
+    }
+
+    double optionalNumber(const json &object, const std::string &key, double fallback, const std::string &where)
+    {
+        return object.contains(key) ? number(object.at(key), member(where, key)) : fallback;
+    }
+
+    void requirePositive(const std::vector<double> &values, const std::string &where)
+    {
+        for (std::size_t i = 0; i < values.size(); ++i)
+            if (!(values[i] > 0.))
+                fail(where + "[" + std::to_string(i) + "] must be a positive number");
+    }
+
+    std::string nonEmptyString(const json &value, const std::string &where)
+    {
+        if (!value.is_string() || value.get<std::string>().empty())
+            fail(where + " must be a non-empty string");
+        return value.get<std::string>();
+    }
+
+    /** {"low": [...], "high": [...]} with \e count entries each and low < high. */
+    ompl::base::RealVectorBounds bounds(const json &value, const std::string &where, std::size_t count)
+    {
+        requireObject(value, where);
+        allowOnly(value, {"low", "high"}, where);
+        const auto low = numbers(field(value, "low", where), where + ".low", count);
+        const auto high = numbers(field(value, "high", where), where + ".high", count);
+        ompl::base::RealVectorBounds out(count);
+        for (std::size_t d = 0; d < count; ++d)
+        {
+            if (!(low[d] < high[d]))
+                fail(where + ".low[" + std::to_string(d) + "] must be below " + where + ".high[" + std::to_string(d) +
+                     "]");
+            out.setLow(d, low[d]);
+            out.setHigh(d, high[d]);
+        }
+        return out;
+    }
+
+    json boundsToJson(const ompl::base::RealVectorBounds &b)
+    {
+        return {{"low", b.low}, {"high", b.high}};
+    }
+
+    /** The yaw of a box2d footprint if \e o is one (a box spanning z in [-1, 1] turned about z only). */
+    bool asBox2D(const ompl_parc::Obstacle &o, double &yaw)
+    {
+        if (o.shape != ompl_parc::Obstacle::Shape::BOX || o.size.z() != 2. || o.pose.translation().z() != 0.)
+            return false;
+        const Eigen::Matrix3d r = o.pose.rotation();
+        yaw = std::atan2(r(1, 0), r(0, 0));
+        return r.isApprox(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix(), 1e-12);
+    }
+
+    json obstacleToJson(const ompl_parc::Obstacle &o)
+    {
+        using Shape = ompl_parc::Obstacle::Shape;
+        const Eigen::Vector3d p = o.pose.translation();
+        double yaw = 0.;
+        if (asBox2D(o, yaw))
+            return {{"name", o.name},
+                    {"shape", "box2d"},
+                    {"center", {p.x(), p.y()}},
+                    {"size", {o.size.x(), o.size.y()}},
+                    {"yaw", yaw}};
+        const Eigen::Quaterniond q(o.pose.rotation());
+        json out = {
+            {"name", o.name}, {"position", {p.x(), p.y(), p.z()}}, {"orientation", {q.w(), q.x(), q.y(), q.z()}}};
+        switch (o.shape)
+        {
+            case Shape::BOX:
+                out["shape"] = "box";
+                out["size"] = {o.size.x(), o.size.y(), o.size.z()};
+                break;
+            case Shape::SPHERE:
+                out["shape"] = "sphere";
+                out["radius"] = o.size.x();
+                break;
+            case Shape::CYLINDER:
+                out["shape"] = "cylinder";
+                out["radius"] = o.size.x();
+                out["length"] = o.size.z();
+                break;
+        }
+        return out;
+    }
+
+    /** Parse obstacle \e value (at \e where, index \e index) into \e environment. */
+    void addObstacle(const json &value, const std::string &where, std::size_t index,
+                     ompl_parc::Environment &environment)
+    {
+        using Shape = ompl_parc::Obstacle::Shape;
+        requireObject(value, where);
+        const std::string shape = nonEmptyString(field(value, "shape", where), where + ".shape");
+        const std::string name = value.contains("name") ? nonEmptyString(value.at("name"), where + ".name")
+                                                        : "obstacle" + std::to_string(index);
+        if (shape == "box2d")
+        {
+            allowOnly(value, {"name", "shape", "center", "size", "yaw"}, where);
+            const auto center = numbers(field(value, "center", where), where + ".center", 2);
+            const auto size = numbers(field(value, "size", where), where + ".size", 2);
+            requirePositive(size, where + ".size");
+            environment.addBox2D(name, center[0], center[1], size[0], size[1], optionalNumber(value, "yaw", 0., where));
+            return;
+        }
+        ompl_parc::Obstacle o;
+        o.name = name;
+        if (shape == "box")
+        {
+            allowOnly(value, {"name", "shape", "size", "position", "orientation"}, where);
+            const auto size = numbers(field(value, "size", where), where + ".size", 3);
+            requirePositive(size, where + ".size");
+            o.size = Eigen::Vector3d(size[0], size[1], size[2]);
+            o.shape = Shape::BOX;
+        }
+        else if (shape == "sphere")
+        {
+            allowOnly(value, {"name", "shape", "radius", "position", "orientation"}, where);
+            o.size.x() = number(field(value, "radius", where), where + ".radius", true);
+            o.shape = Shape::SPHERE;
+        }
+        else if (shape == "cylinder")
+        {
+            allowOnly(value, {"name", "shape", "radius", "length", "position", "orientation"}, where);
+            o.size.x() = number(field(value, "radius", where), where + ".radius", true);
+            o.size.z() = number(field(value, "length", where), where + ".length", true);
+            o.shape = Shape::CYLINDER;
+        }
+        else
+            fail(where + ".shape must be one of box, box2d, sphere, cylinder (got '" + shape + "')");
+
+        const auto p = value.contains("position") ? numbers(value.at("position"), where + ".position", 3)
+                                                  : std::vector<double>{0., 0., 0.};
+        const auto q = value.contains("orientation") ? numbers(value.at("orientation"), where + ".orientation", 4)
+                                                     : std::vector<double>{1., 0., 0., 0.};
+        Eigen::Quaterniond rotation(q[0], q[1], q[2], q[3]);
+        if (!(rotation.norm() > 1e-9))
+            fail(where + ".orientation must be a non-zero quaternion [w, x, y, z]");
+        o.pose = Eigen::Translation3d(p[0], p[1], p[2]) * rotation.normalized();
+        environment.addObstacle(o);
+    }
+
+    json robotToJson(const ompl_parc::Robot &robot)
+    {
+        json out = {{"name", robot.getName()}, {"kind", robot.getKind()}};
+        if (const auto *disc = dynamic_cast<const ompl_parc::DiscRobot *>(&robot))
+        {
+            out["radius"] = disc->getRadius();
+            out["bounds"] = boundsToJson(disc->getBounds());
+        }
+        else if (const auto *arm = dynamic_cast<const ompl_parc::PlanarArm *>(&robot))
+        {
+            out["base"] = {{"x", arm->getBaseX()}, {"y", arm->getBaseY()}, {"yaw", arm->getBaseYaw()}};
+            out["link_lengths"] = arm->getLinkLengths();
+            out["link_width"] = arm->getLinkWidth();
+            out["joint_limits"] = boundsToJson(arm->getBounds());
+        }
+        else
+            fail("robot '" + robot.getName() + "' of kind '" + robot.getKind() + "' cannot be written");
+        return out;
+    }
+
+    /** The robot described by \e value; its start and goal go to \e start and \e goal. */
+    ompl_parc::RobotPtr robotFromJson(const json &value, const std::string &where,
+                                      const ompl_parc::EnvironmentPtr &environment, std::vector<double> &start,
+                                      std::vector<double> &goal)
+    {
+        requireObject(value, where);
+        const std::string name = nonEmptyString(field(value, "name", where), where + ".name");
+        const std::string kind = nonEmptyString(field(value, "kind", where), where + ".kind");
+        ompl_parc::RobotPtr robot;
+        if (kind == "disc")
+        {
+            allowOnly(value, {"name", "kind", "radius", "bounds", "start", "goal"}, where);
+            const double radius = number(field(value, "radius", where), where + ".radius", true);
+            robot = std::make_shared<ompl_parc::DiscRobot>(name, environment, radius,
+                                                           bounds(field(value, "bounds", where), where + ".bounds", 2));
+        }
+        else if (kind == "planar_arm")
+        {
+            allowOnly(value, {"name", "kind", "base", "link_lengths", "link_width", "joint_limits", "start", "goal"},
+                      where);
+            const json &base = field(value, "base", where);
+            requireObject(base, where + ".base");
+            allowOnly(base, {"x", "y", "yaw"}, where + ".base");
+            const auto links = numbers(field(value, "link_lengths", where), where + ".link_lengths", 0);
+            requirePositive(links, where + ".link_lengths");
+            const double width = number(field(value, "link_width", where), where + ".link_width", true);
+            robot = std::make_shared<ompl_parc::PlanarArm>(
+                name, environment, number(field(base, "x", where + ".base"), where + ".base.x"),
+                number(field(base, "y", where + ".base"), where + ".base.y"),
+                optionalNumber(base, "yaw", 0., where + ".base"), links, width,
+                bounds(field(value, "joint_limits", where), where + ".joint_limits", links.size()));
+        }
+        else if (kind == "urdf_arm")
+            fail(where + ": kind 'urdf_arm' is not supported yet");
+        else
+            fail(where + ".kind must be one of disc, planar_arm (got '" + kind + "')");
+        start = numbers(field(value, "start", where), where + ".start", robot->getDimension());
+        goal = numbers(field(value, "goal", where), where + ".goal", robot->getDimension());
+        return robot;
+    }
+
+    /** "at line L, column C: ..." of a nlohmann parse error, without its "[json.exception...] " prefix. */
+    std::string syntaxError(const json::parse_error &e)
+    {
+        std::string what = e.what();
+        const auto at = what.find(" at line ");
+        return (at == std::string::npos ? what : what.substr(at + 1)) + " (byte " + std::to_string(e.byte) + ")";
+    }
+}  // namespace
+
+std::string ompl_parc::ScenarioFile::toJson(const MultiRobotProblem &problem)
+{
+    const auto &si = *problem.getSpaceInformation();
+    const EnvironmentPtr &environment = si.getRobot(0)->getEnvironment();
+    json obstacles = json::array();
+    for (const auto &o : environment->getObstacles())
+        obstacles.push_back(obstacleToJson(o));
+    json robots = json::array();
+    for (std::size_t i = 0; i < si.getRobotCount(); ++i)
+    {
+        const Robot &robot = *si.getRobot(i);
+        if (robot.getEnvironment() != environment)
+            fail("robot '" + robot.getName() + "' has an Environment of its own; a scenario file has one");
+        json entry = robotToJson(robot);
+        entry["start"] = problem.getStart(i);
+        entry["goal"] = problem.getGoal(i);
+        robots.push_back(std::move(entry));
+    }
+    const json doc = {{"format", FORMAT},
+                      {"version", VERSION},
+                      {"name", problem.getName()},
+                      {"resolution", si.getResolution()},
+                      {"obstacles", std::move(obstacles)},
+                      {"robots", std::move(robots)}};
+    return doc.dump(2);
+}
+
+void ompl_parc::ScenarioFile::write(const std::string &path, const MultiRobotProblem &problem)
+{
+    const std::string text = toJson(problem);
+    std::ofstream out(path);
+    if (!out)
+        fail("cannot write '" + path + "'");
+    out << text << '\n';
+    if (!out)
+        fail("error writing '" + path + "'");
+}
+
+ompl_parc::MultiRobotProblem ompl_parc::ScenarioFile::read(const std::string &path)
+{
+    std::ifstream in(path);
+    if (!in)
+        fail("cannot open '" + path + "'");
+    std::stringstream text;
+    text << in.rdbuf();
+    return fromJson(text.str());
+}
+
+ompl_parc::MultiRobotProblem ompl_parc::ScenarioFile::fromJson(const std::string &text)
+{
+    json doc;
+    try
+    {
+        doc = json::parse(text);
+    }
+    catch (const json::parse_error &e)
+    {
+        fail("not valid JSON " + syntaxError(e));
+    }
+    requireObject(doc, "the scenario");
+    allowOnly(doc, {"format", "version", "name", "resolution", "obstacles", "robots"}, "scenario");
+    const json &format = field(doc, "format", "scenario");
+    if (!format.is_string() || format.get<std::string>() != FORMAT)
+        fail("'format' must be \"" + std::string(FORMAT) + "\"");
+    const json &version = field(doc, "version", "scenario");
+    if (!version.is_number_integer() || version.get<int>() != VERSION)
+        fail("unsupported 'version' (this build reads version " + std::to_string(VERSION) + ")");
+    const std::string name = nonEmptyString(field(doc, "name", "scenario"), "name");
+    const double resolution =
+        doc.contains("resolution") ? number(doc.at("resolution"), "resolution", true) : DEFAULT_RESOLUTION;
+
+    auto environment = std::make_shared<Environment>();
+    if (doc.contains("obstacles"))
+    {
+        const json &obstacles = doc.at("obstacles");
+        if (!obstacles.is_array())
+            fail("obstacles must be an array");
+        for (std::size_t i = 0; i < obstacles.size(); ++i)
+            addObstacle(obstacles[i], "obstacles[" + std::to_string(i) + "]", i, *environment);
+    }
+
+    const json &robots = field(doc, "robots", "scenario");
+    if (!robots.is_array() || robots.empty())
+        fail("robots must be a non-empty array");
+    std::vector<RobotPtr> team;
+    std::vector<std::vector<double>> starts(robots.size()), goals(robots.size());
+    std::map<std::string, std::size_t> names;
+    for (std::size_t i = 0; i < robots.size(); ++i)
+    {
+        const std::string where = "robots[" + std::to_string(i) + "]";
+        team.push_back(robotFromJson(robots[i], where, environment, starts[i], goals[i]));
+        const auto [previous, fresh] = names.emplace(team.back()->getName(), i);
+        if (!fresh)
+            fail(where + ".name '" + team.back()->getName() + "' is already used by robots[" +
+                 std::to_string(previous->second) + "]");
+    }
+    MultiRobotProblem problem(std::make_shared<MultiRobotSpaceInformation>(team, resolution), std::move(starts),
+                              std::move(goals), name);
+    const std::string reason = problem.checkEndpoints();
+    if (!reason.empty())
+        fail(reason);
+    return problem;
+}

@@ -1,0 +1,61 @@
+#ifndef OMPL_PARC_SCENARIO_FILE_
+#define OMPL_PARC_SCENARIO_FILE_
+
+#include "ompl_parc/MultiRobotProblem.h"
+
+#include <string>
+
+namespace ompl_parc
+{
+    /** \brief Reads and writes multi-robot problems as JSON (format "ompl_parc.scenario", version 1), so
+        scenarios other than the built-in ones can be planned without recompiling.
+
+        \code
+        {
+          "format": "ompl_parc.scenario", "version": 1,
+          "name": "doorway_swap",
+          "resolution": 128,                        // timesteps per unit of distance (optional, 128)
+          "obstacles": [                            // optional
+            {"name": "wall", "shape": "box2d", "center": [0, 3], "size": [1, 4], "yaw": 0},
+            {"shape": "box", "size": [1, 2, 3], "position": [0, 0, 0], "orientation": [1, 0, 0, 0]},
+            {"shape": "sphere", "radius": 0.5, "position": [2, 2, 0]},
+            {"shape": "cylinder", "radius": 0.3, "length": 2, "position": [4, 0, 0]}
+          ],
+          "robots": [
+            {"name": "r0", "kind": "disc", "radius": 0.5, "bounds": {"low": [-10, -10], "high": [10, 10]},
+             "start": [-5, 0], "goal": [5, 0]},
+            {"name": "arm0", "kind": "planar_arm", "base": {"x": 0, "y": 0, "yaw": 0},
+             "link_lengths": [0.3, 0.3], "link_width": 0.1,
+             "joint_limits": {"low": [-3.14, -3.14], "high": [3.14, 3.14]},
+             "start": [0.5, 0], "goal": [-0.5, 0]}
+          ]
+        }
+        \endcode
+        Obstacles: "box" (full extents), "sphere", "cylinder" (along its local z axis), placed by
+        "position" (default origin) and a unit quaternion "orientation" [w, x, y, z] (default identity);
+        "box2d" is a footprint extruded over z in [-1, 1], turned by "yaw", as Environment::addBox2D().
+        Obstacle names are optional. Robot kinds: "disc" and "planar_arm" ("urdf_arm" is reserved).
+
+        Reading is strict so mistakes surface at load time, not as odd plans: every value is type- and
+        range-checked, unknown fields are rejected (typos), robot names must be unique, and the starts and
+        goals must pass MultiRobotProblem::checkEndpoints(). Errors throw ompl::Exception naming the field
+        ("robots[2].radius must be a positive number") or, for a syntax error, the line and column. */
+    class ScenarioFile
+    {
+      public:
+        /** \brief Write \e problem to \e path; throws ompl::Exception if unwritable or not representable
+            (robots of another kind, or not sharing one Environment). */
+        static void write(const std::string &path, const MultiRobotProblem &problem);
+
+        /** \brief Serialise \e problem to a JSON string. */
+        static std::string toJson(const MultiRobotProblem &problem);
+
+        /** \brief Read a problem from \e path. */
+        static MultiRobotProblem read(const std::string &path);
+
+        /** \brief Parse a problem from JSON text. */
+        static MultiRobotProblem fromJson(const std::string &text);
+    };
+}  // namespace ompl_parc
+
+#endif
