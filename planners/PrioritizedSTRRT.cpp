@@ -119,6 +119,6 @@ void ompl_parc::PrioritizedSTRRT::getPlannerData(ob::PlannerData &data) const
 {
     Planner::getPlannerData(data);
     data.properties["seed INTEGER"] = std::to_string(lastSeed_);
-    data.properties["priority order"] = getPriorityOrder();
+    data.properties["priority_order STRING"] = getPriorityOrder();
     data.properties["solved BOOLEAN"] = solved_ ? "1" : "0";
 }
