@@ -2,11 +2,15 @@
 
 #include "ompl_parc/ScenarioFile.h"
 #include "ompl_parc/planners/ARC.h"
+#include "ompl_parc/planners/EPRRTConnect.h"
 #include "ompl_parc/planners/ORPARC.h"
+#include "ompl_parc/planners/ORPPSTRRT.h"
+#include "ompl_parc/planners/ORRRTConnect.h"
 #include "ompl_parc/planners/PARC.h"
 #include "ompl_parc/planners/PrioritizedSTRRT.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 
+#include <ompl/geometric/PathSimplifier.h>
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
 
 #include <ompl/util/Console.h>
@@ -47,6 +51,21 @@ namespace
              { return std::make_shared<ompl_parc::PrioritizedSTRRT>(si); }},
             {"rrtconnect", [](const ompl::base::SpaceInformationPtr &si)
              { return std::make_shared<ompl::geometric::RRTConnect>(si); }},
+            {"or-rrt-c",
+             [](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<ompl_parc::ORRRTConnect>(si); }},
+            {"ep-rrt-c",
+             [](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<ompl_parc::EPRRTConnect>(si); }},
+            // OR-EP-RRT-C is ORRRTConnect with EP-RRT-C instances: two workers each unless configured.
+            {"or-ep-rrt-c",
+             [](const ompl::base::SpaceInformationPtr &si)
+             {
+                 auto planner = std::make_shared<ompl_parc::ORRRTConnect>(si);
+                 planner->setName("OREPRRTConnect");
+                 planner->setWorkers(2);
+                 return planner;
+             }},
+            {"or-pp-st-rrt",
+             [](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<ompl_parc::ORPPSTRRT>(si); }},
         };
         return table;
     }
@@ -102,6 +121,19 @@ ompl::base::PlannerPtr ompl_parc::tools::createPlanner(const std::string &name,
             throw std::invalid_argument("bad value '" + value + "' for parameter '" + key + "'");
     }
     return planner;
+}
+
+ompl_parc::MultiRobotPlan ompl_parc::tools::planOf(const ompl::base::Planner &planner,
+                                                   const MultiRobotSpaceInformationPtr &si, bool simplify)
+{
+    if (const auto *arc = dynamic_cast<const ArcPlannerBase *>(&planner))
+        return arc->getPlan();
+    if (const auto *prioritized = dynamic_cast<const PrioritizedSTRRT *>(&planner))
+        return prioritized->getPlan();
+    auto &path = *planner.getProblemDefinition()->getSolutionPath()->as<ompl::geometric::PathGeometric>();
+    if (simplify)
+        ompl::geometric::PathSimplifier(si).simplify(path, 1.0);
+    return MultiRobotPlan::fromPathGeometric(*si, path);
 }
 
 po::variables_map ompl_parc::tools::parse(int argc, char **argv, const po::options_description &options,

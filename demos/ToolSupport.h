@@ -1,6 +1,7 @@
 #ifndef OMPL_PARC_DEMOS_TOOL_SUPPORT_
 #define OMPL_PARC_DEMOS_TOOL_SUPPORT_
 
+#include "ompl_parc/MultiRobotPlan.h"
 #include "ompl_parc/MultiRobotProblem.h"
 
 #include <boost/program_options.hpp>
@@ -35,6 +36,12 @@ namespace ompl_parc::tools
         names); throws std::invalid_argument listing the valid names for an unknown planner or parameter. */
     ompl::base::PlannerPtr createPlanner(const std::string &name, const ompl::base::SpaceInformationPtr &si,
                                          const std::vector<std::string> &params);
+
+    /** \brief The solution of \e planner (after a solve with an exact solution) on the timestep grid, as the
+        validator checks it: ARC-family and prioritised planners' own plans; a composite path (OMPL's planners
+        and the coupled baselines) laid on the grid with MultiRobotPlan::fromPathGeometric, after one second of
+        OMPL's shortcutting if \e simplify (the path in the ProblemDefinition is simplified in place). */
+    MultiRobotPlan planOf(const ompl::base::Planner &planner, const MultiRobotSpaceInformationPtr &si, bool simplify);
 
     /** \brief Parses \e argc/\e argv into a variables map (throws on unknown or malformed options). */
     boost::program_options::variables_map parse(

@@ -10,30 +10,17 @@
 #include "ompl_parc/SvgWriter.h"
 #include "ompl_parc/planners/ArcPlannerBase.h"
 
-#include <ompl/geometric/PathSimplifier.h>
 #include <ompl/util/RandomNumbers.h>
 #include <ompl/util/Time.h>
 
 #include <iomanip>
 #include <iostream>
 
-namespace og = ompl::geometric;
 namespace po = boost::program_options;
 using namespace ompl_parc;
 
 namespace
 {
-    /** The plan on the timestep grid: ours directly, OMPL planners' composite paths shortcut and laid on it. */
-    MultiRobotPlan planOf(const ompl::base::Planner &planner, const MultiRobotSpaceInformationPtr &si,
-                          const ompl::base::ProblemDefinitionPtr &pdef)
-    {
-        if (const auto *arc = dynamic_cast<const ArcPlannerBase *>(&planner))
-            return arc->getPlan();
-        auto &path = *pdef->getSolutionPath()->as<og::PathGeometric>();
-        og::PathSimplifier(si).simplify(path, 1.0);
-        return MultiRobotPlan::fromPathGeometric(*si, path);
-    }
-
     void printStatistics(const ompl::base::Planner &planner)
     {
         const auto *arc = dynamic_cast<const ArcPlannerBase *>(&planner);
@@ -120,7 +107,7 @@ int main(int argc, char **argv)
                 return static_cast<int>(tools::EXIT_FAILED);
             }
 
-            const MultiRobotPlan plan = planOf(*planner, si, pdef);
+            const MultiRobotPlan plan = tools::planOf(*planner, si, true);
             const ValidationReport report = SolutionValidator(problem).validate(plan);
             std::cout << "makespan   " << plan.getMakespan() << " timesteps ("
                       << plan.getMakespan() / si->getResolution() << " s at vmax 1)\n"

@@ -9,6 +9,7 @@
 #include <ompl/util/Exception.h>
 #include <ompl/util/RandomNumbers.h>
 
+#include <algorithm>
 #include <limits>
 
 namespace ob = ompl::base;
@@ -282,8 +283,13 @@ void ompl_parc::ArcPlannerBase::getPlannerData(ob::PlannerData &data) const
     p["expansions INTEGER"] = std::to_string(s.expansions);
     p["team_growths INTEGER"] = std::to_string(s.teamGrowths);
     p["global_repairs INTEGER"] = std::to_string(s.globalRepairs);
+    // Property names become SQL column names in ompl_benchmark_statistics: no '-' (solver names have them).
     for (const auto &[solver, wins] : s.solverWins)
-        p["wins_" + solver + " INTEGER"] = std::to_string(wins);
+    {
+        std::string column = "wins_" + solver;
+        std::replace(column.begin(), column.end(), '-', '_');
+        p[column + " INTEGER"] = std::to_string(wins);
+    }
     if (initialised_)
     {
         p["makespan INTEGER"] = std::to_string(plan_.getMakespan());

@@ -108,10 +108,10 @@ ob::PlannerStatus ompl_parc::PrioritizedSTRRT::solve(const ob::PlannerTerminatio
     if (!solved_)
         return ob::PlannerStatus::TIMEOUT;
 
-    MultiRobotPlan plan(*mrsi_);
+    plan_ = MultiRobotPlan(*mrsi_);
     for (std::size_t i = 0; i < mrsi_->getRobotCount(); ++i)
-        plan.setRobotPath(i, patch.paths[i]);
-    pdef_->addSolutionPath(plan.toPathGeometric(mrsi_), false, 0., getName());
+        plan_.setRobotPath(i, patch.paths[i]);
+    pdef_->addSolutionPath(plan_.toPathGeometric(mrsi_), false, 0., getName());
     return ob::PlannerStatus::EXACT_SOLUTION;
 }
 
@@ -119,6 +119,6 @@ void ompl_parc::PrioritizedSTRRT::getPlannerData(ob::PlannerData &data) const
 {
     Planner::getPlannerData(data);
     data.properties["seed INTEGER"] = std::to_string(lastSeed_);
-    data.properties["priority order"] = getPriorityOrder();
+    data.properties["priority_order STRING"] = getPriorityOrder();
     data.properties["solved BOOLEAN"] = solved_ ? "1" : "0";
 }

@@ -1,6 +1,7 @@
 #ifndef OMPL_PARC_PLANNERS_PRIORITIZED_STRRT_
 #define OMPL_PARC_PLANNERS_PRIORITIZED_STRRT_
 
+#include "ompl_parc/MultiRobotPlan.h"
 #include "ompl_parc/MultiRobotSpaceInformation.h"
 #include "ompl_parc/PrioritizedSTRRTSolver.h"
 
@@ -28,6 +29,10 @@ namespace ompl_parc
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
         void getPlannerData(ompl::base::PlannerData &data) const override;
 
+        /** \brief The plan on the timestep grid after a successful solve(): the solution path has one state
+            per timestep, waits included, which re-timing it (MultiRobotPlan::fromPathGeometric) would drop. */
+        const MultiRobotPlan &getPlan() const { return plan_; }
+
         void setRange(double range) { settings_.range = range; }
         double getRange() const { return settings_.range; }
         /** \brief "given" (the team's order) or "shuffled" (from the seed). */
@@ -45,6 +50,9 @@ namespace ompl_parc
         double getInitialTimeBoundFactor() const { return settings_.initialTimeBoundFactor; }
         void setTimeBoundFactorIncrease(double factor);
         double getTimeBoundFactorIncrease() const { return settings_.timeBoundFactorIncrease; }
+
+      protected:
+        MultiRobotPlan plan_;
 
       private:
         /** \brief Apply \e settings if PrioritizedSTRRTSolver accepts them (it throws otherwise). */

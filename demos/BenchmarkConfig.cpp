@@ -1,0 +1,171 @@
+#include "BenchmarkConfig.h"
+
+#include "ToolSupport.h"
+
+#include <boost/lexical_cast.hpp>
+#include <boost/property_tree/ini_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <thread>
+#include <type_traits>
+
+namespace pt = boost::property_tree;
+
+namespace
+{
+    std::string join(const std::vector<std::string> &names)
+    {
+        std::string out;
+        for (const auto &n : names)
+            out += (out.empty() ? "" : ", ") + n;
+        return out;
+    }
+
+    /** \brief Throws unless every key of \e section is one of \e valid, naming the valid ones. */
+    void checkKeys(const pt::ptree &section, const std::string &name, const std::vector<std::string> &valid)
+    {
+        for (const auto &entry : section)
+        {
+            if (!entry.second.empty())
+                throw std::invalid_argument("[" + name + "] " + entry.first + ": nested keys are not supported");
+            if (std::find(valid.begin(), valid.end(), entry.first) == valid.end())
+                throw std::invalid_argument("unknown key '" + entry.first + "' in [" + name +
+                                            "] (valid: " + join(valid) + ")");
+        }
+    }
+
+    std::string required(const pt::ptree &section, const std::string &name, const std::string &key)
+    {
+        const auto value = section.get_optional<std::string>(key);
+        if (!value || value->empty())
+            throw std::invalid_argument("[" + name + "] needs " + key);
+        return *value;
+    }
+
+    /** \brief The number under \e key (or \e fallback if absent); throws unless it parses and is >= \e least. */
+    template <typename T>
+    T number(const pt::ptree &section, const std::string &name, const std::string &key, std::optional<T> fallback,
+             T least)
+    {
+        const auto text = section.get_optional<std::string>(key);
+        if (!text && fallback)
+            return *fallback;
+        const std::string value = text ? *text : required(section, name, key);
+        T parsed;
+        // lexical_cast wraps "-1" around for unsigned types: refuse signs there.
+        const bool negative = std::is_unsigned_v<T> && value.find('-') != std::string::npos;
+        if (negative || !boost::conversion::try_lexical_convert(value, parsed))
+            throw std::invalid_argument("[" + name + "] " + key + ": '" + value + "' is not a valid number");
+        if (!(parsed >= least))
+            throw std::invalid_argument("[" + name + "] " + key + " must be at least " + std::to_string(least) +
+                                        ", got " + value);
+        return parsed;
+    }
+}  // namespace
+
+ompl_parc::tools::BenchmarkConfig ompl_parc::tools::BenchmarkConfig::read(const std::string &path)
+{
+    std::ifstream in(path);
+    if (!in)
+        throw std::invalid_argument("cannot read config file '" + path + "'");
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    return parse(in, folder.empty() ? "." : folder.string());
+}
+
+ompl_parc::tools::BenchmarkConfig ompl_parc::tools::BenchmarkConfig::parse(std::istream &in, const std::string &folder)
+{
+    pt::ptree tree;
+    try
+    {
+        pt::read_ini(in, tree);
+    }
+    catch (const pt::ini_parser_error &e)
+    {
+        throw std::invalid_argument("config line " + std::to_string(e.line()) + ": " + e.message() +
+                                    (e.message() == "duplicate key name"
+                                         ? " (give a second planner of a type its own label: 'label = type')"
+                                         : ""));
+    }
+    for (const auto &section : tree)
+        if (section.first != "problem" && section.first != "benchmark" && section.first != "planner")
+            throw std::invalid_argument(section.second.empty() ? "key '" + section.first + "' outside a section"
+                                                               : "unknown section [" + section.first +
+                                                                     "] (valid: [problem], [benchmark], [planner])");
+    for (const char *name : {"problem", "benchmark", "planner"})
+        if (tree.count(name) == 0)
+            throw std::invalid_argument(std::string("config needs a [") + name + "] section");
+
+    BenchmarkConfig config;
+    const pt::ptree &problem = tree.get_child("problem");
+    checkKeys(problem, "problem", {"name", "scenario", "robots", "resolution", "file"});
+    config.problemName_ = required(problem, "problem", "name");
+    config.scenario_ = required(problem, "problem", "scenario");
+    config.robots_ = number<std::size_t>(problem, "problem", "robots", std::nullopt, 2);
+    config.resolution_ = number<double>(problem, "problem", "resolution", 128., 1e-9);
+    config.scenarioFile_ = problem.get<std::string>("file", "");
+
+    const pt::ptree &benchmark = tree.get_child("benchmark");
+    checkKeys(benchmark, "benchmark", {"time_limit", "mem_limit", "run_count", "output", "seed", "workers"});
+    config.timeLimit_ = number<double>(benchmark, "benchmark", "time_limit", std::nullopt, 1e-9);
+    config.memLimit_ = number<double>(benchmark, "benchmark", "mem_limit", std::nullopt, 1.);
+    config.runCount_ = number<unsigned int>(benchmark, "benchmark", "run_count", std::nullopt, 1u);
+    config.seed_ = number<unsigned int>(benchmark, "benchmark", "seed", 1u, 1u);
+    config.workers_ =
+        number<unsigned int>(benchmark, "benchmark", "workers", std::max(1u, std::thread::hardware_concurrency()), 1u);
+    const std::filesystem::path output = benchmark.get<std::string>("output", "");
+    config.output_ =
+        output.empty()
+            ? folder
+            : (output.is_absolute() ? output : std::filesystem::path(folder) / output).lexically_normal().string();
+
+    // Planner entries are the keys without a dot; "label.param" lines configure them.
+    const pt::ptree &planners = tree.get_child("planner");
+    std::map<std::string, std::size_t> byLabel;
+    const std::vector<std::string> types = plannerNames();
+    for (const auto &entry : planners)
+        if (entry.first.find('.') == std::string::npos)
+        {
+            const std::string type = entry.second.data().empty() ? entry.first : entry.second.data();
+            if (std::find(types.begin(), types.end(), type) == types.end())
+                throw std::invalid_argument("[planner] " + entry.first + ": unknown planner '" + type +
+                                            "' (valid: " + join(types) + ")");
+            byLabel[entry.first] = config.planners_.size();
+            config.planners_.push_back({entry.first, type, entry.first, {}});
+        }
+    if (config.planners_.empty())
+        throw std::invalid_argument("[planner] lists no planner (valid: " + join(types) + ")");
+    for (const auto &entry : planners)
+    {
+        const auto dot = entry.first.find('.');
+        if (dot == std::string::npos)
+            continue;
+        const std::string label = entry.first.substr(0, dot), key = entry.first.substr(dot + 1);
+        const auto it = byLabel.find(label);
+        if (it == byLabel.end())
+        {
+            std::vector<std::string> labels;
+            for (const auto &p : config.planners_)
+                labels.push_back(p.label);
+            throw std::invalid_argument("[planner] " + entry.first + ": no planner labelled '" + label +
+                                        "' (declared: " + join(labels) + ")");
+        }
+        BenchmarkPlanner &planner = config.planners_[it->second];
+        if (key == "name")
+            planner.name = entry.second.data();
+        else
+            planner.params.push_back(key + "=" + entry.second.data());
+    }
+    std::set<std::string> names;
+    for (const auto &planner : config.planners_)
+        if (!names.insert(planner.name).second)
+            throw std::invalid_argument("[planner] two planners are named '" + planner.name +
+                                        "': set label.name so the log can tell them apart");
+    return config;
+}

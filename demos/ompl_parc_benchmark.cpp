@@ -1,0 +1,218 @@
+/* ompl_parc_benchmark CONFIG.cfg: run an OMPL.app-style benchmark configuration (see BenchmarkConfig.h) with
+   OMPL's own ompl::tools::Benchmark. Run j of every planner is seeded with [benchmark] seed + j; every solution
+   is re-checked by the independent SolutionValidator. Writes <output>/<name>.log (OMPL's log format, for
+   ompl_benchmark_statistics) and <output>/<name>.csv (one row per run, for scripts/plot_benchmarks.py).
+   Exit 0: all runs done and every solution valid; 1: some solution failed validation; 2: bad input. */
+#include "BenchmarkConfig.h"
+#include "ToolSupport.h"
+
+#include "ompl_parc/SolutionValidator.h"
+#include "ompl_parc/scenarios/Scenarios.h"
+
+#include <ompl/base/goals/GoalState.h>
+#include <ompl/geometric/SimpleSetup.h>
+#include <ompl/tools/benchmark/Benchmark.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+namespace ob = ompl::base;
+namespace po = boost::program_options;
+using namespace ompl_parc;
+
+namespace
+{
+    /** \brief Threads a planner uses at once: total_workers if it declares it, else instances x workers. */
+    unsigned int workerBudget(const ob::Planner &planner)
+    {
+        const auto value = [&planner](const std::string &name)
+        {
+            std::string text;
+            return planner.params().getParam(name, text) ? std::stoul(text) : 1ul;
+        };
+        if (planner.params().hasParam("total_workers"))
+            return value("total_workers");
+        return value("instances") * value("workers");
+    }
+
+    /** \brief The CSV columns: what the plotting script needs, taken from the run's properties. */
+    const std::vector<std::pair<std::string, std::string>> &csvColumns()
+    {
+        static const std::vector<std::pair<std::string, std::string>> columns = {
+            {"time", "time REAL"},
+            {"makespan", "makespan INTEGER"},
+            {"sum_of_costs", "sum_of_costs INTEGER"},
+            {"initial_time", "initial_wall_time REAL"},
+            {"detection_time", "detection_wall_time REAL"},
+            {"resolution_time", "resolution_wall_time REAL"},
+            {"projected_time", "projected_total_time REAL"},
+            {"batches", "batches INTEGER"},
+            {"first_batch_size", "first_batch_size INTEGER"},
+            {"average_batch_size", "average_batch_size REAL"},
+            {"memory", "memory REAL"},
+        };
+        return columns;
+    }
+
+    std::ofstream openForWriting(const std::filesystem::path &path)
+    {
+        std::ofstream out(path);
+        if (!out)
+            throw std::invalid_argument("cannot write '" + path.string() + "' (is the output folder writable?)");
+        return out;
+    }
+}  // namespace
+
+int main(int argc, char **argv)
+{
+    return tools::runTool(
+        "ompl_parc_benchmark",
+        [&]
+        {
+            po::options_description options("Usage: ompl_parc_benchmark [options] CONFIG.cfg\nOptions");
+            options.add_options()("config", po::value<std::string>(), "benchmark configuration (OMPL.app INI)")(
+                "help,h", "show this help");
+            po::positional_options_description positional;
+            positional.add("config", 1);
+            const auto vm = tools::parse(argc, argv, options, positional);
+            if (vm.count("help") || !vm.count("config"))
+            {
+                std::cout << options << std::endl;
+                return static_cast<int>(vm.count("help") ? tools::EXIT_SOLVED : tools::EXIT_BAD_INPUT);
+            }
+
+            // Everything that can be wrong with the input is checked before the first run.
+            const auto config = tools::BenchmarkConfig::read(vm["config"].as<std::string>());
+            if (!config.getScenarioFile().empty())
+                throw std::invalid_argument(
+                    "[problem] file: scenario files are not supported yet (use scenario "
+                    "and robots)");
+            const MultiRobotProblem problem =
+                scenarios::createScenario(config.getScenario(), config.getRobots(), config.getResolution());
+            if (const std::string reason = problem.checkEndpoints(); !reason.empty())
+                throw std::invalid_argument(reason);
+            const auto &si = problem.getSpaceInformation();
+
+            std::vector<ob::PlannerPtr> planners;
+            for (const auto &entry : config.getPlanners())
+            {
+                auto planner = tools::createPlanner(entry.type, si, entry.params);
+                planner->setName(entry.name);
+                if (const unsigned int budget = workerBudget(*planner); budget > config.getWorkers())
+                    throw std::invalid_argument(
+                        "planner '" + entry.name + "' needs " + std::to_string(budget) +
+                        " workers but [benchmark] workers = " + std::to_string(config.getWorkers()));
+                if (!planner->params().hasParam("seed"))
+                    std::cerr << "ompl_parc_benchmark: planner '" << entry.name
+                              << "' has no seed parameter: its runs use OMPL's global random sequence\n";
+                planners.push_back(planner);
+            }
+
+            const std::filesystem::path folder = config.getOutput();
+            std::error_code error;
+            std::filesystem::create_directories(folder, error);
+            if (error)
+                throw std::invalid_argument("cannot create output folder '" + folder.string() +
+                                            "': " + error.message());
+            const std::filesystem::path logPath = folder / (config.getProblemName() + ".log");
+            const std::filesystem::path csvPath = folder / (config.getProblemName() + ".csv");
+            openForWriting(logPath);  // fail now rather than after hours of runs
+            std::ofstream csv = openForWriting(csvPath);
+            csv << "scenario,robots,seed,planner,type,workers,success,status";
+            for (const auto &column : csvColumns())
+                csv << ',' << column.first;
+            csv << '\n';
+
+            ompl::geometric::SimpleSetup setup(si);
+            ob::ScopedState<> start(si), goal(si);
+            const auto pdef = problem.createProblemDefinition();
+            start = pdef->getStartState(0);
+            goal = pdef->getGoal()->as<ob::GoalState>()->getState();
+            setup.setStartAndGoalStates(start, goal);
+            setup.setPlanner(planners.front());  // else SimpleSetup allocates a default planner it never runs
+
+            ompl::tools::Benchmark benchmark(setup, config.getProblemName());
+            benchmark.addExperimentParameter("robots", "INTEGER", std::to_string(config.getRobots()));
+            benchmark.addExperimentParameter("resolution", "REAL", std::to_string(config.getResolution()));
+            benchmark.addExperimentParameter("base_seed", "INTEGER", std::to_string(config.getSeed()));
+            benchmark.addExperimentParameter("worker_budget", "INTEGER", std::to_string(config.getWorkers()));
+            for (const auto &planner : planners)
+                benchmark.addPlanner(planner);
+
+            const auto seedOf = [&] { return config.getSeed() + benchmark.getStatus().activeRun; };
+            benchmark.setPreRunEvent(
+                [&](const ob::PlannerPtr &planner)
+                {
+                    if (planner->params().hasParam("seed"))
+                        planner->params().setParam("seed", std::to_string(seedOf()));
+                });
+
+            const SolutionValidator validator(problem);
+            const std::size_t total = planners.size() * config.getRunCount();
+            std::size_t done = 0, invalid = 0;
+            std::map<std::string, std::string> typeOf;
+            for (const auto &entry : config.getPlanners())
+                typeOf[entry.name] = entry.type;
+            benchmark.setPostRunEvent(
+                [&](const ob::PlannerPtr &planner, ompl::tools::Benchmark::RunProperties &run)
+                {
+                    // A run succeeds only with an exact solution that the independent validator accepts.
+                    bool success = false;
+                    std::string verdict = "no exact solution";
+                    if (planner->getProblemDefinition()->hasExactSolution())
+                    {
+                        try
+                        {
+                            const MultiRobotPlan plan = tools::planOf(*planner, si, false);
+                            const ValidationReport report = validator.validate(plan);
+                            success = report.valid;
+                            verdict = report.valid ? "valid" : report.message;
+                            run["makespan INTEGER"] = std::to_string(plan.getMakespan());
+                            run["sum_of_costs INTEGER"] = std::to_string(plan.getSumOfCosts());
+                        }
+                        catch (const std::exception &e)
+                        {
+                            verdict = std::string("validation failed: ") + e.what();
+                        }
+                        if (!success)
+                        {
+                            ++invalid;
+                            std::cerr << "ompl_parc_benchmark: *** INVALID SOLUTION *** planner '" << planner->getName()
+                                      << "' run " << benchmark.getStatus().activeRun << " (seed " << seedOf()
+                                      << "): " << verdict << std::endl;
+                        }
+                    }
+                    run["success BOOLEAN"] = success ? "1" : "0";
+                    run["validation STRING"] = verdict;
+                    run["seed INTEGER"] = std::to_string(seedOf());
+
+                    const auto status =
+                        ob::PlannerStatus(static_cast<ob::PlannerStatus::StatusType>(std::stoi(run["status ENUM"])));
+                    csv << config.getScenario() << ',' << config.getRobots() << ',' << seedOf() << ','
+                        << planner->getName() << ',' << typeOf[planner->getName()] << ',' << workerBudget(*planner)
+                        << ',' << (success ? 1 : 0) << ',' << status.asString();
+                    for (const auto &column : csvColumns())
+                    {
+                        const auto it = run.find(column.second);
+                        csv << ',' << (it == run.end() ? "" : it->second);
+                    }
+                    csv << std::endl;
+                    std::cerr << "[" << ++done << "/" << total << "] " << config.getProblemName() << " "
+                              << planner->getName() << " seed " << seedOf() << ": "
+                              << (success ? "solved" : status.asString()) << " in " << run["time REAL"] << " s"
+                              << std::endl;
+                });
+
+            ompl::tools::Benchmark::Request request(config.getTimeLimit(), config.getMemLimit(), config.getRunCount());
+            request.displayProgress = false;    // our progress line goes to stderr instead
+            request.saveConsoleOutput = false;  // no console log file next to the results
+            request.simplify = false;           // the planners' own solutions are what is compared
+            benchmark.benchmark(request);
+            if (!benchmark.saveResultsToFile(logPath.string().c_str()))
+                throw std::runtime_error("could not write '" + logPath.string() + "'");
+            std::cerr << "ompl_parc_benchmark: wrote " << logPath.string() << " and " << csvPath.string()
+                      << (invalid ? ", " + std::to_string(invalid) + " INVALID solutions" : std::string()) << std::endl;
+            return static_cast<int>(invalid ? tools::EXIT_FAILED : tools::EXIT_SOLVED);
+        });
+}

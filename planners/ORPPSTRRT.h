@@ -1,0 +1,34 @@
+#ifndef OMPL_PARC_PLANNERS_OR_PP_ST_RRT_
+#define OMPL_PARC_PLANNERS_OR_PP_ST_RRT_
+
+#include "ompl_parc/planners/PrioritizedSTRRT.h"
+
+namespace ompl_parc
+{
+    /** \brief OR-PP-ST-RRT, the paper's decoupled OR-parallel baseline: K PrioritizedSTRRT instances, each with
+        its own shuffled priority order and seed (a mix of \e seed and k), raced with OMPL's ParallelPlan. The
+        first solution wins and stops the others, all joined before solve() returns. Sampling different
+        priority orders is what makes OR-parallel prioritised planning effective: one order may be infeasible
+        where another is easy.
+
+        Parameters are PrioritizedSTRRT's (applied to every instance; \e priority_order is always "shuffled")
+        plus \e instances (K). After a solve, getPlan() is the winner's plan. */
+    class ORPPSTRRT : public PrioritizedSTRRT
+    {
+      public:
+        explicit ORPPSTRRT(const ompl::base::SpaceInformationPtr &si);
+
+        ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
+        void getPlannerData(ompl::base::PlannerData &data) const override;
+
+        /** \brief K; throws ompl::Exception for 0. */
+        void setInstances(unsigned int instances);
+        unsigned int getInstances() const { return instances_; }
+
+      private:
+        unsigned int instances_{2};
+        std::string winner_;
+    };
+}  // namespace ompl_parc
+
+#endif
