@@ -16,14 +16,16 @@ namespace ompl_parc::test
     MultiRobotProblem twoDiscs(std::vector<double> startA, std::vector<double> goalA, std::vector<double> startB,
                                std::vector<double> goalB, bool wall = false, double resolution = 128.);
 
-    /** \brief Seconds within which a planner must return after its termination condition fires: 100 ms,
-        or 1 s in sanitizer builds, which run several times slower. */
+    /** \brief Seconds within which a planner must return after its termination condition fires. Typical is
+        a few milliseconds; the bound is 250 ms (1.5 s in sanitizer builds, which run several times slower)
+        because ctest runs two tests at once on a 2-core machine and a parallel planner's threads then wait
+        for a core: a tighter bound would make the tests flaky, not stricter. */
     constexpr double promptReturn()
     {
 #ifdef OMPL_PARC_SANITIZED
-        return 1.0;
+        return 1.5;
 #else
-        return 0.1;
+        return 0.25;
 #endif
     }
 

@@ -60,7 +60,7 @@ expect 0 "validated  yes" "$bin/ompl_parc_demo" --planner parc --workers 2 --rob
     --picture-static
 expect 0 'class="trace"' cat "$tmp/cross.svg"
 expect 2 "planner 'arc' has no 'workers' parameter\|'arc' has no 'workers'" "$bin/ompl_parc_demo" --workers 2
-expect 2 "unknown planner 'astar' (valid: arc, orparc, parc, pp-st-rrt, rrtconnect)" \
+expect 2 "unknown planner 'astar' (valid: arc, ep-rrt-c, or-ep-rrt-c, or-pp-st-rrt, or-rrt-c, orparc, parc, pp-st-rrt, rrtconnect)" \
     "$bin/ompl_parc_demo" --planner astar
 expect 2 "not both" "$bin/ompl_parc_demo" --scenario mobile_circle --scenario-file "$scenarios/doorway_swap.json"
 expect 2 "cannot open" "$bin/ompl_parc_demo" --scenario-file "$tmp/missing_scenario.json"
