@@ -40,7 +40,7 @@ echo '{"format": "ompl_parc.solution", "version": 1' >"$tmp/truncated.json"
 expect 2 "not valid JSON" "$bin/ompl_parc_validate" "$tmp/truncated.json"
 expect 2 "cannot open" "$bin/ompl_parc_validate" "$tmp/missing.json"
 expect 2 "no solution file" "$bin/ompl_parc_validate"
-expect 2 "unknown scenario 'warehouse' (valid: mobile_circle, mobile_cross, planar_cross)" \
+expect 2 "unknown scenario 'warehouse' (valid: mobile_circle, mobile_cross, panda_cage, planar_cross)" \
     "$bin/ompl_parc_demo" --scenario warehouse
 expect 2 "even number of robots" "$bin/ompl_parc_demo" --robots 5
 expect 2 "time-limit must be positive" "$bin/ompl_parc_demo" --time-limit 0
