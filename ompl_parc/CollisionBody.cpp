@@ -63,3 +63,22 @@ void ompl_parc::CollisionBody::updateBound()
     }
     boundRadius_ = r;
 }
+
+void ompl_parc::CollisionBody::expandBox(std::array<double, 3> &lo, std::array<double, 3> &hi) const
+{
+    // One min/max reduction per coordinate over plain arrays: vectorises.
+    const std::vector<double> *a[3] = {&ax_, &ay_, &az_}, *b[3] = {&bx_, &by_, &bz_};
+    const double *r = radius_.data();
+    for (int d = 0; d < 3; ++d)
+    {
+        const double *pa = a[d]->data(), *pb = b[d]->data();
+        double l = lo[d], h = hi[d];
+        for (std::size_t i = 0; i < size(); ++i)
+        {
+            l = std::min(l, std::min(pa[i], pb[i]) - r[i]);
+            h = std::max(h, std::max(pa[i], pb[i]) + r[i]);
+        }
+        lo[d] = l;
+        hi[d] = h;
+    }
+}

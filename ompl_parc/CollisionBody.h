@@ -1,6 +1,7 @@
 #ifndef OMPL_PARC_COLLISION_BODY_
 #define OMPL_PARC_COLLISION_BODY_
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -23,6 +24,10 @@ namespace ompl_parc
 
         /** \brief Add a sphere (a capsule of zero length). */
         void addSphere(double x, double y, double z, double radius) { addCapsule(x, y, z, x, y, z, radius); }
+
+        /** \brief Grow the axis-aligned box [\e lo, \e hi] to contain every capsule (swept bounds over time
+            are unions of such boxes). */
+        void expandBox(std::array<double, 3> &lo, std::array<double, 3> &hi) const;
 
         /** \brief Recompute the bounding sphere; call after the last addCapsule(). */
         void updateBound();

@@ -2,6 +2,7 @@
 
 #include "ompl_parc/DiscRobot.h"
 #include "ompl_parc/PlanarArm.h"
+#include "ompl_parc/UrdfArm.h"
 
 #include <nlohmann/json.hpp>
 #include <ompl/util/Exception.h>
@@ -124,6 +125,26 @@ namespace
         return r.isApprox(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix(), 1e-12);
     }
 
+    /** "position" [x, y, z] and "orientation" quaternion [w, x, y, z] of an object (both optional). */
+    Eigen::Isometry3d poseFromJson(const json &value, const std::string &where)
+    {
+        const auto p = value.contains("position") ? numbers(value.at("position"), where + ".position", 3)
+                                                  : std::vector<double>{0., 0., 0.};
+        const auto q = value.contains("orientation") ? numbers(value.at("orientation"), where + ".orientation", 4)
+                                                     : std::vector<double>{1., 0., 0., 0.};
+        Eigen::Quaterniond rotation(q[0], q[1], q[2], q[3]);
+        if (!(rotation.norm() > 1e-9))
+            fail(where + ".orientation must be a non-zero quaternion [w, x, y, z]");
+        return Eigen::Translation3d(p[0], p[1], p[2]) * rotation.normalized();
+    }
+
+    json poseToJson(const Eigen::Isometry3d &pose)
+    {
+        const Eigen::Vector3d p = pose.translation();
+        const Eigen::Quaterniond q(pose.rotation());
+        return {{"position", {p.x(), p.y(), p.z()}}, {"orientation", {q.w(), q.x(), q.y(), q.z()}}};
+    }
+
     json obstacleToJson(const ompl_parc::Obstacle &o)
     {
         using Shape = ompl_parc::Obstacle::Shape;
@@ -135,9 +156,8 @@ namespace
                     {"center", {p.x(), p.y()}},
                     {"size", {o.size.x(), o.size.y()}},
                     {"yaw", yaw}};
-        const Eigen::Quaterniond q(o.pose.rotation());
-        json out = {
-            {"name", o.name}, {"position", {p.x(), p.y(), p.z()}}, {"orientation", {q.w(), q.x(), q.y(), q.z()}}};
+        json out = poseToJson(o.pose);
+        out["name"] = o.name;
         switch (o.shape)
         {
             case Shape::BOX:
@@ -201,14 +221,7 @@ namespace
         else
             fail(where + ".shape must be one of box, box2d, sphere, cylinder (got '" + shape + "')");
 
-        const auto p = value.contains("position") ? numbers(value.at("position"), where + ".position", 3)
-                                                  : std::vector<double>{0., 0., 0.};
-        const auto q = value.contains("orientation") ? numbers(value.at("orientation"), where + ".orientation", 4)
-                                                     : std::vector<double>{1., 0., 0., 0.};
-        Eigen::Quaterniond rotation(q[0], q[1], q[2], q[3]);
-        if (!(rotation.norm() > 1e-9))
-            fail(where + ".orientation must be a non-zero quaternion [w, x, y, z]");
-        o.pose = Eigen::Translation3d(p[0], p[1], p[2]) * rotation.normalized();
+        o.pose = poseFromJson(value, where);
         environment.addObstacle(o);
     }
 
@@ -226,6 +239,13 @@ namespace
             out["link_lengths"] = arm->getLinkLengths();
             out["link_width"] = arm->getLinkWidth();
             out["joint_limits"] = boundsToJson(arm->getBounds());
+        }
+        else if (const auto *urdf = dynamic_cast<const ompl_parc::UrdfArm *>(&robot))
+        {
+            out["urdf"] = urdf->getUrdfXml();  // inline: the file stays self-contained
+            out["base_link"] = urdf->getBaseLink();
+            out["tip_link"] = urdf->getTipLink();
+            out["base_pose"] = poseToJson(urdf->getBasePose());
         }
         else
             fail("robot '" + robot.getName() + "' of kind '" + robot.getKind() + "' cannot be written");
@@ -265,9 +285,31 @@ namespace
                 bounds(field(value, "joint_limits", where), where + ".joint_limits", links.size()));
         }
         else if (kind == "urdf_arm")
-            fail(where + ": kind 'urdf_arm' is not supported yet");
+        {
+            // The URDF inline ("urdf": the XML) or by file ("urdf_file": a path), the chain's end links, and
+            // the base pose ("base_pose": position and orientation quaternion).
+            allowOnly(value,
+                      {"name", "kind", "urdf", "urdf_file", "base_link", "tip_link", "base_pose", "start", "goal"},
+                      where);
+            if (value.contains("urdf") == value.contains("urdf_file"))
+                fail(where + " needs exactly one of 'urdf' (the XML) or 'urdf_file' (a path)");
+            const std::string xml =
+                value.contains("urdf")
+                    ? nonEmptyString(value.at("urdf"), where + ".urdf")
+                    : ompl_parc::UrdfArm::readFile(nonEmptyString(value.at("urdf_file"), where + ".urdf_file"));
+            Eigen::Isometry3d base = Eigen::Isometry3d::Identity();
+            if (value.contains("base_pose"))
+            {
+                requireObject(value.at("base_pose"), where + ".base_pose");
+                allowOnly(value.at("base_pose"), {"position", "orientation"}, where + ".base_pose");
+                base = poseFromJson(value.at("base_pose"), where + ".base_pose");
+            }
+            robot = std::make_shared<ompl_parc::UrdfArm>(
+                name, environment, xml, nonEmptyString(field(value, "base_link", where), where + ".base_link"),
+                nonEmptyString(field(value, "tip_link", where), where + ".tip_link"), base);
+        }
         else
-            fail(where + ".kind must be one of disc, planar_arm (got '" + kind + "')");
+            fail(where + ".kind must be one of disc, planar_arm, urdf_arm (got '" + kind + "')");
         start = numbers(field(value, "start", where), where + ".start", robot->getDimension());
         goal = numbers(field(value, "goal", where), where + ".goal", robot->getDimension());
         return robot;

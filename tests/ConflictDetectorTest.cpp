@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
+#include <thread>
 
 using namespace ompl_parc;
 
@@ -47,6 +49,57 @@ namespace
                         all.push_back({i, j, t});
         return all;
     }
+
+    /** The first conflict of each pair, in (t, i, j) order: what a non-ARC scan of all pairs must return. */
+    std::vector<Conflict> firstPerPair(const std::vector<Conflict> &all)
+    {
+        std::vector<Conflict> first;
+        for (const Conflict &c : all)
+            if (std::none_of(first.begin(), first.end(),
+                             [&c](const Conflict &f) { return f.first == c.first && f.second == c.second; }))
+                first.push_back(c);
+        return first;
+    }
+
+    /** All conflicts at the earliest conflicting timestep: what an ARC-mode scan of all pairs must return. */
+    std::vector<Conflict> earliestTimestep(const std::vector<Conflict> &all)
+    {
+        std::vector<Conflict> earliest;
+        for (const Conflict &c : all)
+            if (c.timestep == all.front().timestep)
+                earliest.push_back(c);
+        return earliest;
+    }
+
+    std::vector<std::size_t> allPairs(const ConflictDetector &detector)
+    {
+        std::vector<std::size_t> pairs(detector.getPairCount());
+        for (std::size_t p = 0; p < pairs.size(); ++p)
+            pairs[p] = p;
+        return pairs;
+    }
+
+    /** Both scan modes of a detector with segment length \e h against brute force on \e plan. */
+    void expectScansMatchBruteForce(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan, std::size_t h)
+    {
+        const auto expected = bruteForce(si, plan);
+        const std::size_t end = plan.getMakespan() + 1;
+        ConflictDetector arcMode(si, h), workerMode(si, h);
+        const auto pairs = allPairs(arcMode);
+        EXPECT_EQ(arcMode.scan(plan, pairs, 0, end, true), expected.empty() ? expected : earliestTimestep(expected))
+            << "H = " << h;
+        EXPECT_EQ(workerMode.scan(plan, pairs, 0, end, false), firstPerPair(expected)) << "H = " << h;
+        // Frontiers: at the pair's first conflict, or past its last timestep to check.
+        for (std::size_t p = 0; p < pairs.size(); ++p)
+        {
+            const auto [i, j] = workerMode.getPair(p);
+            const auto first = firstPerPair(expected);
+            const auto c = std::find_if(first.begin(), first.end(),
+                                        [i = i, j = j](const Conflict &f) { return f.first == i && f.second == j; });
+            EXPECT_EQ(workerMode.getFrontier(i, j),
+                      c != first.end() ? c->timestep : std::max(plan.getArrival(i), plan.getArrival(j)) + 1);
+        }
+    }
 }  // namespace
 
 TEST(ConflictDetector, EarliestConflictMatchesBruteForceOnRandomPlans)
@@ -69,6 +122,98 @@ TEST(ConflictDetector, EarliestConflictMatchesBruteForceOnRandomPlans)
         }
     }
     EXPECT_GT(withConflicts, 10);
+}
+
+TEST(ConflictDetector, BroadPhaseScansMatchBruteForceInBothModes)
+{
+    std::mt19937 rng(17);
+    const auto problem = scenarios::createMobileCircle(8);
+    const auto &si = *problem.getSpaceInformation();
+    for (int k = 0; k < 30; ++k)
+    {
+        const auto plan = randomPlan(problem, rng);
+        for (std::size_t h : {0, 1, 5, 64, 1000})
+            expectScansMatchBruteForce(si, plan, h);
+    }
+}
+
+TEST(ConflictDetector, BroadPhaseMatchesBruteForceForArms)
+{
+    // Planar arms: capsules, several per body; random joint-space walks around the start configurations.
+    std::mt19937 rng(23);
+    const auto problem = scenarios::createPlanarCross(8);
+    const auto &si = *problem.getSpaceInformation();
+    std::uniform_real_distribution<double> step(-0.05, 0.05);
+    std::uniform_int_distribution<int> length(20, 300);
+    for (int k = 0; k < 20; ++k)
+    {
+        MultiRobotPlan plan(si);
+        for (std::size_t r = 0; r < si.getRobotCount(); ++r)
+        {
+            std::vector<double> q = problem.getStart(r), flat = q;
+            for (int t = length(rng); t > 0; --t)
+            {
+                for (double &v : q)
+                    v += step(rng);
+                flat.insert(flat.end(), q.begin(), q.end());
+            }
+            plan.setRobotPath(r, flat);
+        }
+        for (std::size_t h : {0, 3, 64})
+            expectScansMatchBruteForce(si, plan, h);
+    }
+}
+
+TEST(ConflictDetector, InvalidationDropsStaleSweptBounds)
+{
+    // After a scan has computed the swept bounds, robot a's path is replaced from timestep t on by a copy
+    // of robot b's: stale bounds would let the broad phase skip the new conflicts.
+    std::mt19937 rng(31);
+    const auto problem = scenarios::createMobileCircle(8);
+    const auto &si = *problem.getSpaceInformation();
+    std::uniform_int_distribution<std::size_t> robot(0, si.getRobotCount() - 1);
+    for (int k = 0; k < 20; ++k)
+    {
+        auto plan = randomPlan(problem, rng);
+        ConflictDetector detector(si, 16);
+        const auto pairs = allPairs(detector);
+        detector.scan(plan, pairs, 0, plan.getMakespan() + 1, false);
+        const std::size_t a = robot(rng), b = (a + 1 + robot(rng) % (si.getRobotCount() - 1)) % si.getRobotCount();
+        const std::size_t t = std::uniform_int_distribution<std::size_t>(0, plan.getArrival(a))(rng);
+        auto path = plan.getRobotPath(a);
+        path.resize(2 * t);
+        for (std::size_t s = t; s <= std::max(t, plan.getArrival(b)); ++s)
+            path.insert(path.end(), plan.getConfig(b, s), plan.getConfig(b, s) + 2);
+        plan.setRobotPath(a, path);
+        detector.invalidate(a, t);
+        ConflictDetector fresh(si, 16);
+        EXPECT_EQ(detector.findEarliest(plan), fresh.findEarliest(plan));
+        const auto expected = bruteForce(si, plan);
+        ASSERT_FALSE(expected.empty());
+        EXPECT_EQ(*fresh.findEarliest(plan), expected.front());
+    }
+}
+
+TEST(ConflictDetector, ConcurrentScansOfDisjointPairSubsetsShareSweptBounds)
+{
+    std::mt19937 rng(41);
+    const auto problem = scenarios::createMobileCircle(8);
+    const auto &si = *problem.getSpaceInformation();
+    for (int k = 0; k < 10; ++k)
+    {
+        const auto plan = randomPlan(problem, rng);
+        ConflictDetector detector(si, 8);
+        std::vector<std::size_t> subsets[2];
+        for (std::size_t p = 0; p < detector.getPairCount(); ++p)
+            subsets[p % 2].push_back(p);
+        std::vector<Conflict> found[2];
+        std::thread other([&] { found[1] = detector.scan(plan, subsets[1], 0, plan.getMakespan() + 1, false); });
+        found[0] = detector.scan(plan, subsets[0], 0, plan.getMakespan() + 1, false);
+        other.join();
+        found[0].insert(found[0].end(), found[1].begin(), found[1].end());
+        std::sort(found[0].begin(), found[0].end());
+        EXPECT_EQ(found[0], firstPerPair(bruteForce(si, plan)));
+    }
 }
 
 TEST(ConflictDetector, FrontiersResumeAndResetOnInvalidation)

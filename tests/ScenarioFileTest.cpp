@@ -1,5 +1,6 @@
 #include "ompl_parc/DiscRobot.h"
 #include "ompl_parc/PlanarArm.h"
+#include "ompl_parc/UrdfArm.h"
 #include "ompl_parc/ScenarioFile.h"
 #include "ompl_parc/SolutionValidator.h"
 #include "ompl_parc/planners/ARC.h"
@@ -66,6 +67,14 @@ namespace
                 EXPECT_EQ(pa->getLinkLengths(), pb.getLinkLengths());
                 EXPECT_EQ(pa->getLinkWidth(), pb.getLinkWidth());
             }
+            if (const auto *ua = dynamic_cast<const UrdfArm *>(&ra))
+            {
+                const auto &ub = dynamic_cast<const UrdfArm &>(rb);
+                EXPECT_EQ(ua->getUrdfXml(), ub.getUrdfXml());
+                EXPECT_EQ(ua->getBaseLink(), ub.getBaseLink());
+                EXPECT_EQ(ua->getTipLink(), ub.getTipLink());
+                EXPECT_TRUE(ua->getBasePose().isApprox(ub.getBasePose(), 1e-12));
+            }
             EXPECT_EQ(a.getStart(i), b.getStart(i));
             EXPECT_EQ(a.getGoal(i), b.getGoal(i));
         }
@@ -105,6 +114,8 @@ TEST(ScenarioFile, BuiltInScenariosRoundTrip)
     for (const auto &name : scenarios::scenarioNames())
         for (std::size_t robots : {2u, 4u, 8u, 16u})
         {
+            if (name == "panda_cage" && robots > 4)
+                continue;  // Panda Cage exists for 2, 4 and 8 robots; 2 and 4 cover its format
             SCOPED_TRACE(name + " " + std::to_string(robots));
             const auto problem = scenarios::createScenario(name, robots, 64.);
             ScenarioFile::write(path, problem);
@@ -151,7 +162,7 @@ TEST(ScenarioFile, ErrorsNameTheField)
                     "robots[0].bounds.low[1] must be below robots[0].bounds.high[1]"));
     EXPECT_TRUE(has(errorFor([](json &d) { d["robots"][0]["raduis"] = 1; }), "robots[0]: unknown field 'raduis'"));
     EXPECT_TRUE(has(errorFor([](json &d) { d["robots"][1]["kind"] = "urdf_arm"; }),
-                    "robots[1]: kind 'urdf_arm' is not supported yet"));
+                    "robots[1]: unknown field"));
     EXPECT_TRUE(has(errorFor([](json &d) { d["robots"][1]["kind"] = "tank"; }),
                     "robots[1].kind must be one of disc, planar_arm"));
     EXPECT_TRUE(

@@ -41,7 +41,7 @@ echo '{"format": "ompl_parc.solution", "version": 1' >"$tmp/truncated.json"
 expect 2 "not valid JSON" "$bin/ompl_parc_validate" "$tmp/truncated.json"
 expect 2 "cannot open" "$bin/ompl_parc_validate" "$tmp/missing.json"
 expect 2 "no solution file" "$bin/ompl_parc_validate"
-expect 2 "unknown scenario 'warehouse' (valid: mobile_circle, mobile_cross, planar_cross)" \
+expect 2 "unknown scenario 'warehouse' (valid: mobile_circle, mobile_cross, panda_cage, planar_cross)" \
     "$bin/ompl_parc_demo" --scenario warehouse
 expect 2 "even number of robots" "$bin/ompl_parc_demo" --robots 5
 expect 2 "time-limit must be positive" "$bin/ompl_parc_demo" --time-limit 0
@@ -78,8 +78,8 @@ edit "$tmp/dup.json" 'doc["robots"][1]["name"] = "west_a"'
 expect 2 "robots\[1\].name 'west_a' is already used" "$bin/ompl_parc_demo" --scenario-file "$tmp/dup.json"
 edit "$tmp/wall.json" 'doc["robots"][0]["start"] = [0, 4]'
 expect 2 "start of robot 'west_a' is" "$bin/ompl_parc_validate" --scenario-file "$tmp/wall.json" "$tmp/door.json"
-edit "$tmp/urdf.json" 'doc["robots"][0]["kind"] = "urdf_arm"'
-expect 2 "kind 'urdf_arm' is not supported yet" "$bin/ompl_parc_demo" --scenario-file "$tmp/urdf.json"
+edit "$tmp/urdf.json" 'doc["robots"][0] = {"name": "a", "kind": "urdf_arm", "urdf_file": "/nonexistent/arm.urdf", "base_link": "b", "tip_link": "t", "start": [0], "goal": [0]}'
+expect 2 "nonexistent/arm.urdf" "$bin/ompl_parc_demo" --scenario-file "$tmp/urdf.json"
 head -c 200 "$scenarios/doorway_swap.json" >"$tmp/cut.json"
 expect 2 "not valid JSON at line" "$bin/ompl_parc_demo" --scenario-file "$tmp/cut.json"
 # Bad input is reported on exactly one line.

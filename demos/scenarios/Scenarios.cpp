@@ -2,6 +2,7 @@
 
 #include "ompl_parc/DiscRobot.h"
 #include "ompl_parc/PlanarArm.h"
+#include "ompl_parc/scenarios/PandaCage.h"
 
 #include <ompl/util/Exception.h>
 
@@ -126,9 +127,12 @@ namespace ompl_parc::scenarios
         using Builder = std::function<MultiRobotProblem(std::size_t, double)>;
         const std::map<std::string, Builder> &builders()
         {
-            static const std::map<std::string, Builder> table = {{"mobile_circle", createMobileCircle},
-                                                                 {"mobile_cross", createMobileCross},
-                                                                 {"planar_cross", createPlanarCross}};
+            static const std::map<std::string, Builder> table = {
+                {"mobile_circle", createMobileCircle},
+                {"mobile_cross", createMobileCross},
+                {"planar_cross", createPlanarCross},
+                {"panda_cage",
+                 [](std::size_t robots, double resolution) { return createPandaCage(robots, 0, resolution); }}};
             return table;
         }
     }  // namespace

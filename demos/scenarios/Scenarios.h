@@ -26,8 +26,9 @@ namespace ompl_parc
         /** \brief Two facing columns of 3-link planar arms between walls, swinging from +30 to -30 degrees. */
         MultiRobotProblem createPlanarCross(std::size_t robots, double resolution = 128.);
 
-        /** \brief Build a scenario by name ("mobile_cross", "mobile_circle", "planar_cross"); throws
-            ompl::Exception listing the valid names for an unknown one. */
+        /** \brief Build a scenario by name ("mobile_cross", "mobile_circle", "planar_cross", "panda_cage");
+            throws ompl::Exception listing the valid names for an unknown one. "panda_cage" is task 0 of
+            Panda Cage; the other tasks are built with createPandaCage(robots, task) (PandaCage.h). */
         MultiRobotProblem createScenario(const std::string &name, std::size_t robots, double resolution = 128.);
 
         /** \brief The names createScenario() accepts. */

@@ -1,0 +1,154 @@
+#include "ompl_parc/UrdfArm.h"
+#include "ompl_parc/scenarios/PandaCage.h"
+
+#include <ompl/util/Exception.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace ompl_parc;
+
+namespace
+{
+    std::shared_ptr<UrdfArm> panda(const Eigen::Isometry3d &base = Eigen::Isometry3d::Identity())
+    {
+        return std::make_shared<UrdfArm>("panda", nullptr, scenarios::pandaUrdf(), "panda_link0", "panda_link8", base);
+    }
+
+    /** A two-joint arm with one box, one cylinder and one sphere; \e extra is spliced in before </robot>. */
+    std::string smallArm(const std::string &joint2Type = "revolute",
+                         const std::string &limit2 = "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>",
+                         const std::string &geometry = "<box size=\"0.1 0.1 0.4\"/>", const std::string &extra = "")
+    {
+        return R"(<robot name="small">
+  <link name="base"><collision><geometry><sphere radius="0.1"/></geometry></collision></link>
+  <link name="upper"><collision><origin xyz="0 0 0.2"/><geometry>)" +
+               geometry + R"(</geometry></collision></link>
+  <link name="lower"><collision><origin xyz="0 0 0.2"/><geometry><cylinder radius="0.05" length="0.4"/></geometry></collision></link>
+  <link name="tip"/>
+  <joint name="j1" type="revolute"><parent link="base"/><child link="upper"/><axis xyz="0 1 0"/>
+    <limit lower="-2" upper="2" effort="1" velocity="1"/></joint>
+  <joint name="j2" type=")" +
+               joint2Type +
+               R"("><parent link="upper"/><child link="lower"/><origin xyz="0 0 0.4"/><axis xyz="0 1 0"/>)" + limit2 +
+               R"(</joint>
+  <joint name="j3" type="fixed"><parent link="lower"/><child link="tip"/><origin xyz="0 0 0.4"/></joint>
+)" + extra + "</robot>";
+    }
+
+    void expectError(const std::string &urdf, const std::string &needle)
+    {
+        try
+        {
+            UrdfArm("arm", nullptr, urdf, "base", "tip", Eigen::Isometry3d::Identity());
+            ADD_FAILURE() << "no error, expected one mentioning '" << needle << "'";
+        }
+        catch (const ompl::Exception &e)
+        {
+            EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+        }
+    }
+}  // namespace
+
+TEST(UrdfArm, PandaForwardKinematicsMatchesHandComputedPoses)
+{
+    const auto arm = panda();
+    ASSERT_EQ(arm->getDimension(), 7u);
+    EXPECT_EQ(arm->getKind(), "urdf_arm");
+    // Zero configuration: flange at the published (0.088, 0, 0.926), pointing down.
+    std::vector<double> q(7, 0.);
+    auto tip = arm->computeTipPose(q.data());
+    EXPECT_LT((tip.translation() - Eigen::Vector3d(0.088, 0., 0.926)).norm(), 1e-6);
+    EXPECT_LT((tip.linear().col(2) - Eigen::Vector3d(0., 0., -1.)).norm(), 1e-6);
+    // Joint 1 at +90 degrees turns it about z.
+    q[0] = M_PI / 2;
+    tip = arm->computeTipPose(q.data());
+    EXPECT_LT((tip.translation() - Eigen::Vector3d(0., 0.088, 0.926)).norm(), 1e-6);
+    // Elbow (joint 4) at -90 degrees: joint 5 at (0.0825 + 0.384, 0, 0.649 + 0.0825), the wrist offset 0.088
+    // points down and the flange 0.107 back towards the base (worked out frame by frame with the DH table).
+    q = {0., 0., 0., -M_PI / 2, 0., 0., 0.};
+    tip = arm->computeTipPose(q.data());
+    EXPECT_LT((tip.translation() - Eigen::Vector3d(0.3595, 0., 0.6435)).norm(), 1e-6);
+    EXPECT_LT((tip.linear().col(2) - Eigen::Vector3d(-1., 0., 0.)).norm(), 1e-6);
+    // The base pose moves everything: base at (1, 2, 0.5) turned by 180 degrees about z.
+    const auto moved = panda(UrdfArm::pose(1., 2., 0.5, 0., 0., M_PI));
+    q.assign(7, 0.);
+    EXPECT_LT((moved->computeTipPose(q.data()).translation() - Eigen::Vector3d(1. - 0.088, 2., 1.426)).norm(), 1e-6);
+}
+
+TEST(UrdfArm, PandaLimitsGeometryAndSelfCollision)
+{
+    const auto arm = panda();
+    EXPECT_DOUBLE_EQ(arm->getBounds().low[3], -3.0718);
+    EXPECT_DOUBLE_EQ(arm->getBounds().high[5], 3.7525);
+    // The hand (fixed below the tip) is folded into the last link.
+    EXPECT_EQ(arm->getPrimitives().back().shape.name, "panda_hand");
+    EXPECT_EQ(arm->getPrimitives().back().frame, 7u);
+    EXPECT_FALSE(arm->getSelfCollisionPairs().empty());
+    // The "ready" pose is valid; folding the hand into the base is self-collision.
+    const std::vector<double> ready = {0., -M_PI / 4, 0., -3 * M_PI / 4, 0., M_PI / 2, M_PI / 4};
+    EXPECT_EQ(arm->checkValidity(ready.data()), Robot::Validity::VALID);
+    const std::vector<double> folded = {0., 1.7, 0., -3.0, 0., 3.7, 0.};
+    EXPECT_EQ(arm->checkValidity(folded.data()), Robot::Validity::SELF_COLLISION);
+}
+
+TEST(UrdfArm, PrimitivesBecomeEnclosingCapsules)
+{
+    const UrdfArm arm("arm", nullptr, smallArm(), "base", "tip", Eigen::Isometry3d::Identity());
+    ASSERT_EQ(arm.getDimension(), 2u);
+    const std::vector<double> q = {0., 0.};
+    CollisionBody body;
+    arm.computeBody(q.data(), body);
+    ASSERT_EQ(body.size(), 3u);
+    // Sphere at the base; box 0.1 x 0.1 x 0.4 -> capsule along z over its length, radius = half-diagonal of
+    // the 0.1 x 0.1 cross-section; cylinder -> same axis and radius.
+    EXPECT_DOUBLE_EQ(body.radius_[0], 0.1);
+    EXPECT_NEAR(body.radius_[1], std::sqrt(0.005), 1e-12);
+    EXPECT_NEAR(body.az_[1], 0., 1e-12);
+    EXPECT_NEAR(body.bz_[1], 0.4, 1e-12);
+    EXPECT_DOUBLE_EQ(body.radius_[2], 0.05);
+    EXPECT_NEAR(body.az_[2], 0.4, 1e-12);
+    EXPECT_NEAR(body.bz_[2], 0.8, 1e-12);
+    EXPECT_LT((arm.computeTipPose(q.data()).translation() - Eigen::Vector3d(0., 0., 0.8)).norm(), 1e-12);
+    // Base and lower link are not adjacent: one self-collision pair, and they do not touch at zero.
+    ASSERT_EQ(arm.getSelfCollisionPairs().size(), 1u);
+}
+
+TEST(UrdfArm, ContinuousJointsAreBoundedToPlusMinusPi)
+{
+    const UrdfArm arm("arm", nullptr, smallArm("continuous", ""), "base", "tip", Eigen::Isometry3d::Identity());
+    EXPECT_DOUBLE_EQ(arm.getBounds().low[1], -M_PI);
+    EXPECT_DOUBLE_EQ(arm.getBounds().high[1], M_PI);
+}
+
+TEST(UrdfArm, ClearErrorsNameTheElement)
+{
+    expectError("<robot name=\"broken\"><link name=\"a\"></robot>", "malformed URDF");
+    expectError(smallArm("revolute", ""), "malformed URDF");  // urdfdom rejects a revolute joint without <limit>
+    expectError(smallArm("prismatic"), "joint 'j2'");
+    expectError(smallArm("revolute", "<limit lower=\"1\" upper=\"-1\" effort=\"1\" velocity=\"1\"/>"), "joint 'j2'");
+    expectError(smallArm("revolute", "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>",
+                         "<mesh filename=\"upper.stl\"/>"),
+                "link 'upper'");
+    expectError(smallArm("revolute", "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>",
+                         "<box size=\"0.1 0.1 0.4\"/>",
+                         "<link name=\"side\"/><joint name=\"branch\" type=\"revolute\"><parent link=\"upper\"/>"
+                         "<child link=\"side\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>"),
+                "non-serial chain: movable joint 'branch'");
+    EXPECT_THROW(UrdfArm("arm", nullptr, smallArm(), "base", "nowhere", Eigen::Isometry3d::Identity()),
+                 ompl::Exception);
+    EXPECT_THROW(UrdfArm("arm", nullptr, smallArm(), "tip", "base", Eigen::Isometry3d::Identity()), ompl::Exception);
+}
+
+TEST(UrdfArm, PositionIkReachesTargets)
+{
+    const auto arm = panda();
+    std::mt19937 rng(3);
+    std::vector<double> q;
+    const Eigen::Vector3d target(0.4, 0.2, 0.5);
+    ASSERT_TRUE(arm->solvePositionIk(target, rng, q));
+    EXPECT_LT((arm->computeTipPose(q.data()).translation() - target).norm(), 1e-4);
+    EXPECT_TRUE(arm->isValid(q.data()));
+    EXPECT_FALSE(arm->solvePositionIk(Eigen::Vector3d(3., 0., 0.), rng, q, 3));  // out of reach
+}

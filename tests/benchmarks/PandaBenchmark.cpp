@@ -1,0 +1,129 @@
+/* Panda-Panda pair checks per second: our capsule model (bodiesCollide) against FCL on the URDF primitives
+   (per primitive pair an AABB test, then FCL's narrow phase: UrdfFclModel), on the same random configuration
+   pairs of two facing Pandas (the layout of tests/PandaCollisionTest.cpp). "Configs" variants include the
+   forward kinematics of both arms; "Placed" ones check precomputed bodies / placed FCL objects, as the
+   conflict scan does (it computes each robot's body once per timestep for all its pairs). */
+#include "ompl_parc/CapsuleCollision.h"
+#include "ompl_parc/UrdfFclModel.h"
+#include "ompl_parc/scenarios/PandaCage.h"
+
+#include <benchmark/benchmark.h>
+
+#include <random>
+
+using namespace ompl_parc;
+
+namespace
+{
+    constexpr std::size_t SAMPLES = 4096;
+
+    struct PandaPairs
+    {
+        std::shared_ptr<UrdfArm> a, b;
+        std::vector<std::vector<double>> qa, qb;
+
+        PandaPairs()
+        {
+            const auto load = [](const Eigen::Isometry3d &base) {
+                return std::make_shared<UrdfArm>("panda", nullptr, scenarios::pandaUrdf(), "panda_link0", "panda_link8",
+                                                 base);
+            };
+            a = load(Eigen::Isometry3d::Identity());
+            b = load(UrdfArm::pose(0.6, 0., 1.2, M_PI, 0., M_PI));
+            std::mt19937 rng(1);
+            for (std::size_t k = 0; k < SAMPLES; ++k)
+            {
+                qa.push_back(sample(*a, rng));
+                qb.push_back(sample(*b, rng));
+            }
+        }
+
+        static std::vector<double> sample(const Robot &robot, std::mt19937 &rng)
+        {
+            std::vector<double> q(robot.getDimension());
+            for (unsigned int k = 0; k < robot.getDimension(); ++k)
+                q[k] = std::uniform_real_distribution<double>(robot.getBounds().low[k], robot.getBounds().high[k])(rng);
+            return q;
+        }
+    };
+
+    const PandaPairs &pairs()
+    {
+        static const PandaPairs set;
+        return set;
+    }
+
+    void BM_PandaPairCapsules(benchmark::State &state)
+    {
+        const auto &set = pairs();
+        CollisionBody ba, bb;
+        std::size_t k = 0, hits = 0;
+        for (auto _ : state)
+        {
+            set.a->computeBody(set.qa[k].data(), ba);
+            set.b->computeBody(set.qb[k].data(), bb);
+            hits += bodiesCollide(ba, bb) ? 1 : 0;
+            k = (k + 1) % SAMPLES;
+        }
+        benchmark::DoNotOptimize(hits);
+        state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
+    }
+    BENCHMARK(BM_PandaPairCapsules)->Name("PandaPair/Capsules/Configs");
+
+    void BM_PandaPairCapsulesPlaced(benchmark::State &state)
+    {
+        const auto &set = pairs();
+        std::vector<CollisionBody> ba(SAMPLES), bb(SAMPLES);
+        for (std::size_t k = 0; k < SAMPLES; ++k)
+        {
+            set.a->computeBody(set.qa[k].data(), ba[k]);
+            set.b->computeBody(set.qb[k].data(), bb[k]);
+        }
+        std::size_t k = 0, hits = 0;
+        for (auto _ : state)
+        {
+            hits += bodiesCollide(ba[k], bb[k]) ? 1 : 0;
+            k = (k + 1) % SAMPLES;
+        }
+        benchmark::DoNotOptimize(hits);
+        state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
+    }
+    BENCHMARK(BM_PandaPairCapsulesPlaced)->Name("PandaPair/Capsules/Placed");
+
+    void BM_PandaPairFcl(benchmark::State &state)
+    {
+        const auto &set = pairs();
+        UrdfFclModel ma(set.a), mb(set.b);
+        std::size_t k = 0, hits = 0;
+        for (auto _ : state)
+        {
+            ma.setConfig(set.qa[k].data());
+            mb.setConfig(set.qb[k].data());
+            hits += ma.collides(mb) ? 1 : 0;
+            k = (k + 1) % SAMPLES;
+        }
+        benchmark::DoNotOptimize(hits);
+        state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
+    }
+    BENCHMARK(BM_PandaPairFcl)->Name("PandaPair/FCL/Configs");
+
+    void BM_PandaPairFclPlaced(benchmark::State &state)
+    {
+        const auto &set = pairs();
+        std::vector<UrdfFclModel> ma, mb;
+        for (std::size_t k = 0; k < SAMPLES; ++k)
+        {
+            ma.emplace_back(set.a).setConfig(set.qa[k].data());
+            mb.emplace_back(set.b).setConfig(set.qb[k].data());
+        }
+        std::size_t k = 0, hits = 0;
+        for (auto _ : state)
+        {
+            hits += ma[k].collides(mb[k]) ? 1 : 0;
+            k = (k + 1) % SAMPLES;
+        }
+        benchmark::DoNotOptimize(hits);
+        state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
+    }
+    BENCHMARK(BM_PandaPairFclPlaced)->Name("PandaPair/FCL/Placed");
+}  // namespace
