@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <regex>
+#include <cctype>
 #include <set>
 
 using namespace ompl_parc;
@@ -22,37 +22,71 @@ namespace
     }
 
     /** Well-formed enough for a viewer: one root, every start tag closed in order, quotes balanced, no
-        attribute given twice. */
+        attribute given twice. A hand-written scanner: std::regex recurses per character and overflows the
+        stack on the long attribute values of animations (seen under ASan). */
     ::testing::AssertionResult wellFormed(const std::string &svg)
     {
+        const auto isName = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == ':' || c == '-'; };
         std::vector<std::string> open;
-        std::size_t roots = 0;
-        const std::regex tag(R"(<(/?)([a-zA-Z]+)((?:\s+[a-zA-Z:-]+="[^"<]*")*)\s*(/?)>|<\?xml[^>]*\?>)");
-        std::size_t last = 0;
-        for (std::sregex_iterator it(svg.begin(), svg.end(), tag), end; it != end; ++it)
+        std::size_t roots = 0, i = 0;
+        const auto fail = [&](const std::string &what) { return ::testing::AssertionFailure() << what << " at " << i; };
+        while ((i = svg.find_first_of("<>", i)) != std::string::npos)
         {
-            const auto &m = *it;
-            if (svg.substr(last, m.position() - last).find_first_of("<>") != std::string::npos)
-                return ::testing::AssertionFailure() << "stray '<' or '>' at " << last;
-            last = m.position() + m.length();
-            if (m[2].length() == 0)
-                continue;  // the XML declaration
-            const std::string attributes = m[3];
-            const std::regex name(R"(([a-zA-Z:-]+)=")");
-            std::set<std::string> names;
-            for (std::sregex_iterator at(attributes.begin(), attributes.end(), name), none; at != none; ++at)
-                if (!names.insert((*at)[1]).second)
-                    return ::testing::AssertionFailure() << "attribute " << (*at)[1] << " repeated at " << m.position();
-            if (m[1] == "/")
+            if (svg[i] == '>')
+                return fail("stray '>'");
+            if (svg.compare(i, 5, "<?xml") == 0)
             {
-                if (open.empty() || open.back() != m[2])
-                    return ::testing::AssertionFailure() << "unexpected </" << m[2] << "> at " << m.position();
+                i = svg.find("?>", i);
+                if (i == std::string::npos)
+                    return fail("unterminated XML declaration");
+                i += 2;
+                continue;
+            }
+            ++i;
+            const bool closing = i < svg.size() && svg[i] == '/';
+            i += closing ? 1 : 0;
+            const std::size_t nameStart = i;
+            while (i < svg.size() && std::isalpha(static_cast<unsigned char>(svg[i])))
+                ++i;
+            const std::string element = svg.substr(nameStart, i - nameStart);
+            if (element.empty())
+                return fail("tag without a name");
+            std::set<std::string> names;
+            while (true)
+            {
+                const std::size_t space = i;
+                while (i < svg.size() && std::isspace(static_cast<unsigned char>(svg[i])))
+                    ++i;
+                if (i >= svg.size() || !isName(svg[i]) || i == space)
+                    break;
+                const std::size_t attributeStart = i;
+                while (i < svg.size() && isName(svg[i]))
+                    ++i;
+                const std::string attribute = svg.substr(attributeStart, i - attributeStart);
+                if (svg.compare(i, 2, "=\"") != 0)
+                    return fail("attribute " + attribute + " without a quoted value");
+                const std::size_t end = svg.find('"', i + 2);
+                if (end == std::string::npos || svg.find('<', i + 2) < end)
+                    return fail("unterminated value of " + attribute);
+                if (!names.insert(attribute).second)
+                    return fail("attribute " + attribute + " repeated");
+                i = end + 1;
+            }
+            const bool empty = i < svg.size() && svg[i] == '/';
+            i += empty ? 1 : 0;
+            if (i >= svg.size() || svg[i] != '>')
+                return fail("malformed <" + element + ">");
+            ++i;
+            if (closing)
+            {
+                if (open.empty() || open.back() != element)
+                    return fail("unexpected </" + element + ">");
                 open.pop_back();
             }
-            else if (m[4] != "/")
+            else if (!empty)
             {
                 roots += open.empty() ? 1 : 0;
-                open.push_back(m[2]);
+                open.push_back(element);
             }
         }
         if (!open.empty() || roots != 1)
@@ -117,4 +151,14 @@ TEST(SvgWriter, StaticSnapshotHasNoAnimation)
     EXPECT_TRUE(wellFormed(alone));
     EXPECT_EQ(count(alone, "class=\"trace\""), 0u);
     EXPECT_EQ(count(alone, "<g class=\"robot\""), 8u);
+}
+
+TEST(SvgWriter, TheWellFormednessCheckRejectsBrokenDocuments)
+{
+    EXPECT_TRUE(wellFormed("<?xml version=\"1.0\"?><svg a=\"1\"><g b=\"x y\"/><text>hi</text></svg>"));
+    EXPECT_FALSE(wellFormed("<svg><g></svg>"));
+    EXPECT_FALSE(wellFormed("<svg fill=\"a\" fill=\"b\"></svg>"));
+    EXPECT_FALSE(wellFormed("<svg></svg><svg></svg>"));
+    EXPECT_FALSE(wellFormed("<svg a=\"1></svg>"));
+    EXPECT_FALSE(wellFormed("<svg> > </svg>"));
 }
