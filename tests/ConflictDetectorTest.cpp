@@ -14,42 +14,6 @@ using namespace ompl_parc;
 
 namespace
 {
-    /** Random-walk plans of different lengths for the discs of Mobile Circle 8, all started in a 7 x 7
-        square, so that about half of the plans have conflicts, at all sorts of times. */
-    MultiRobotPlan randomPlan(const MultiRobotProblem &problem, std::mt19937 &rng)
-    {
-        const auto &si = *problem.getSpaceInformation();
-        MultiRobotPlan plan(si);
-        std::uniform_real_distribution<double> step(-1. / 128., 1. / 128.);
-        std::uniform_int_distribution<int> length(50, 400);
-        for (std::size_t r = 0; r < si.getRobotCount(); ++r)
-        {
-            std::uniform_real_distribution<double> where(-3.5, 3.5);
-            std::vector<double> q = {where(rng), where(rng)}, flat = q;
-            const int n = length(rng);
-            for (int t = 0; t < n; ++t)
-            {
-                q[0] += 5. * step(rng);  // bigger than a timestep allows: the detector does not check speed
-                q[1] += 5. * step(rng);
-                flat.insert(flat.end(), q.begin(), q.end());
-            }
-            plan.setRobotPath(r, flat);
-        }
-        return plan;
-    }
-
-    /** All conflicts by brute force, in (t, i, j) order. */
-    std::vector<Conflict> bruteForce(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan)
-    {
-        std::vector<Conflict> all;
-        for (std::size_t t = 0; t <= plan.getMakespan(); ++t)
-            for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
-                for (std::size_t j = i + 1; j < plan.getRobotCount(); ++j)
-                    if (si.robotsCollide(i, plan.getConfig(i, t), j, plan.getConfig(j, t)))
-                        all.push_back({i, j, t});
-        return all;
-    }
-
     /** The first conflict of each pair, in (t, i, j) order: what a non-ARC scan of all pairs must return. */
     std::vector<Conflict> firstPerPair(const std::vector<Conflict> &all)
     {
@@ -82,7 +46,7 @@ namespace
     /** Both scan modes of a detector with segment length \e h against brute force on \e plan. */
     void expectScansMatchBruteForce(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan, std::size_t h)
     {
-        const auto expected = bruteForce(si, plan);
+        const auto expected = test::allConflicts(si, plan);
         const std::size_t end = plan.getMakespan() + 1;
         ConflictDetector arcMode(si, h), workerMode(si, h);
         const auto pairs = allPairs(arcMode);
@@ -110,8 +74,8 @@ TEST(ConflictDetector, EarliestConflictMatchesBruteForceOnRandomPlans)
     int withConflicts = 0;
     for (int k = 0; k < 40; ++k)
     {
-        const auto plan = randomPlan(problem, rng);
-        const auto expected = bruteForce(si, plan);
+        const auto plan = test::randomWalkPlan(*problem.getSpaceInformation(), rng, 5. / 128.);
+        const auto expected = test::allConflicts(si, plan);
         ConflictDetector detector(si);
         const auto found = detector.findEarliest(plan);
         ASSERT_EQ(found.has_value(), !expected.empty());
@@ -131,7 +95,7 @@ TEST(ConflictDetector, BroadPhaseScansMatchBruteForceInBothModes)
     const auto &si = *problem.getSpaceInformation();
     for (int k = 0; k < 30; ++k)
     {
-        const auto plan = randomPlan(problem, rng);
+        const auto plan = test::randomWalkPlan(*problem.getSpaceInformation(), rng, 5. / 128.);
         for (std::size_t h : {0, 1, 5, 64, 1000})
             expectScansMatchBruteForce(si, plan, h);
     }
@@ -174,7 +138,7 @@ TEST(ConflictDetector, InvalidationDropsStaleSweptBounds)
     std::uniform_int_distribution<std::size_t> robot(0, si.getRobotCount() - 1);
     for (int k = 0; k < 20; ++k)
     {
-        auto plan = randomPlan(problem, rng);
+        auto plan = test::randomWalkPlan(*problem.getSpaceInformation(), rng, 5. / 128.);
         ConflictDetector detector(si, 16);
         const auto pairs = allPairs(detector);
         detector.scan(plan, pairs, 0, plan.getMakespan() + 1, false);
@@ -188,7 +152,7 @@ TEST(ConflictDetector, InvalidationDropsStaleSweptBounds)
         detector.invalidate(a, t);
         ConflictDetector fresh(si, 16);
         EXPECT_EQ(detector.findEarliest(plan), fresh.findEarliest(plan));
-        const auto expected = bruteForce(si, plan);
+        const auto expected = test::allConflicts(si, plan);
         ASSERT_FALSE(expected.empty());
         EXPECT_EQ(*fresh.findEarliest(plan), expected.front());
     }
@@ -201,7 +165,7 @@ TEST(ConflictDetector, ConcurrentScansOfDisjointPairSubsetsShareSweptBounds)
     const auto &si = *problem.getSpaceInformation();
     for (int k = 0; k < 10; ++k)
     {
-        const auto plan = randomPlan(problem, rng);
+        const auto plan = test::randomWalkPlan(*problem.getSpaceInformation(), rng, 5. / 128.);
         ConflictDetector detector(si, 8);
         std::vector<std::size_t> subsets[2];
         for (std::size_t p = 0; p < detector.getPairCount(); ++p)
@@ -212,7 +176,7 @@ TEST(ConflictDetector, ConcurrentScansOfDisjointPairSubsetsShareSweptBounds)
         other.join();
         found[0].insert(found[0].end(), found[1].begin(), found[1].end());
         std::sort(found[0].begin(), found[0].end());
-        EXPECT_EQ(found[0], firstPerPair(bruteForce(si, plan)));
+        EXPECT_EQ(found[0], firstPerPair(test::allConflicts(si, plan)));
     }
 }
 
@@ -223,8 +187,8 @@ TEST(ConflictDetector, FrontiersResumeAndResetOnInvalidation)
     const auto &si = *problem.getSpaceInformation();
     for (int k = 0; k < 20; ++k)
     {
-        auto plan = randomPlan(problem, rng);
-        const auto expected = bruteForce(si, plan);
+        auto plan = test::randomWalkPlan(*problem.getSpaceInformation(), rng, 5. / 128.);
+        const auto expected = test::allConflicts(si, plan);
         if (expected.empty())
             continue;
         ConflictDetector detector(si);
@@ -239,7 +203,7 @@ TEST(ConflictDetector, FrontiersResumeAndResetOnInvalidation)
             path[2 * t] += 1000.;
         plan.setRobotPath(c.first, path);
         detector.invalidate(c.first, c.timestep);
-        const auto after = bruteForce(si, plan);
+        const auto after = test::allConflicts(si, plan);
         const auto next = detector.findEarliest(plan);
         ASSERT_EQ(next.has_value(), !after.empty());
         if (next)

@@ -18,37 +18,6 @@ namespace ob = ompl::base;
 
 namespace
 {
-    /** Random-walk plans of 8 discs started in a 7 x 7 square: many conflicts at all sorts of times. */
-    MultiRobotPlan randomPlan(const MultiRobotSpaceInformation &si, std::mt19937 &rng)
-    {
-        MultiRobotPlan plan(si);
-        std::uniform_real_distribution<double> where(-3.5, 3.5), step(-0.04, 0.04);
-        std::uniform_int_distribution<int> length(50, 400);
-        for (std::size_t r = 0; r < si.getRobotCount(); ++r)
-        {
-            std::vector<double> q = {where(rng), where(rng)}, flat = q;
-            for (int t = length(rng); t > 0; --t)
-            {
-                q[0] += step(rng);
-                q[1] += step(rng);
-                flat.insert(flat.end(), q.begin(), q.end());
-            }
-            plan.setRobotPath(r, flat);
-        }
-        return plan;
-    }
-
-    std::vector<Conflict> allConflicts(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan)
-    {
-        std::vector<Conflict> all;
-        for (std::size_t t = 0; t <= plan.getMakespan(); ++t)
-            for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
-                for (std::size_t j = i + 1; j < plan.getRobotCount(); ++j)
-                    if (si.robotsCollide(i, plan.getConfig(i, t), j, plan.getConfig(j, t)))
-                        all.push_back({i, j, t});
-        return all;
-    }
-
     bool shares(const Conflict &a, const Conflict &b)
     {
         return a.first == b.first || a.first == b.second || a.second == b.first || a.second == b.second;
@@ -79,7 +48,7 @@ TEST_P(BatchDetection, MatchesTheSequentialScanAndTheDefinitions)
     int batches = 0;
     for (int k = 0; k < 20; ++k)
     {
-        const auto plan = randomPlan(si, rng);
+        const auto plan = test::randomWalkPlan(si, rng, 0.04);
         // Every other plan with earlier repairs on record: robot sets then grow, so conflicts get deferred
         // while their own robots stay out of the batch (their pairs keep being scanned).
         RepairCache cache;
@@ -88,7 +57,7 @@ TEST_P(BatchDetection, MatchesTheSequentialScanAndTheDefinitions)
             cache.add({0, 1}, 0, 1000);
             cache.add({2, 5}, 0, 1000);
         }
-        const auto all = allConflicts(si, plan);
+        const auto all = test::allConflicts(si, plan);
         ConflictDetector detector(si);
         double projected = 0.;
         unsigned int growths = 0;

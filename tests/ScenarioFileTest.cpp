@@ -161,8 +161,7 @@ TEST(ScenarioFile, ErrorsNameTheField)
     EXPECT_TRUE(has(errorFor([](json &d) { d["robots"][0]["bounds"]["low"][1] = 9; }),
                     "robots[0].bounds.low[1] must be below robots[0].bounds.high[1]"));
     EXPECT_TRUE(has(errorFor([](json &d) { d["robots"][0]["raduis"] = 1; }), "robots[0]: unknown field 'raduis'"));
-    EXPECT_TRUE(has(errorFor([](json &d) { d["robots"][1]["kind"] = "urdf_arm"; }),
-                    "robots[1]: unknown field"));
+    EXPECT_TRUE(has(errorFor([](json &d) { d["robots"][1]["kind"] = "urdf_arm"; }), "robots[1]: unknown field"));
     EXPECT_TRUE(has(errorFor([](json &d) { d["robots"][1]["kind"] = "tank"; }),
                     "robots[1].kind must be one of disc, planar_arm"));
     EXPECT_TRUE(

@@ -59,3 +59,35 @@ ompl_parc::MultiRobotPlan ompl_parc::test::planFromTimestepPath(const MultiRobot
             plan.appendConfig(i, si.getRobotValues(path.getState(t), i));
     return plan;
 }
+
+ompl_parc::MultiRobotPlan ompl_parc::test::randomWalkPlan(const MultiRobotSpaceInformation &si, std::mt19937 &rng,
+                                                          double maxStep)
+{
+    MultiRobotPlan plan(si);
+    std::uniform_real_distribution<double> where(-3.5, 3.5), step(-maxStep, maxStep);
+    std::uniform_int_distribution<int> length(50, 400);
+    for (std::size_t r = 0; r < si.getRobotCount(); ++r)
+    {
+        std::vector<double> q = {where(rng), where(rng)}, flat = q;
+        for (int t = length(rng); t > 0; --t)
+        {
+            q[0] += step(rng);
+            q[1] += step(rng);
+            flat.insert(flat.end(), q.begin(), q.end());
+        }
+        plan.setRobotPath(r, flat);
+    }
+    return plan;
+}
+
+std::vector<ompl_parc::Conflict> ompl_parc::test::allConflicts(const MultiRobotSpaceInformation &si,
+                                                               const MultiRobotPlan &plan)
+{
+    std::vector<Conflict> all;
+    for (std::size_t t = 0; t <= plan.getMakespan(); ++t)
+        for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
+            for (std::size_t j = i + 1; j < plan.getRobotCount(); ++j)
+                if (si.robotsCollide(i, plan.getConfig(i, t), j, plan.getConfig(j, t)))
+                    all.push_back({i, j, t});
+    return all;
+}

@@ -8,7 +8,10 @@
 
 #include <ompl/geometric/PathGeometric.h>
 
+#include <random>
 #include <vector>
+
+#include "ompl_parc/Conflict.h"
 
 namespace ompl_parc::test
 {
@@ -28,6 +31,13 @@ namespace ompl_parc::test
         return 0.25;
 #endif
     }
+
+    /** \brief Random-walk plans of different lengths (50-400 timesteps) for a team of discs, all started in
+        a 7 x 7 square, moving up to \e maxStep per coordinate and timestep: conflicts at all sorts of times. */
+    MultiRobotPlan randomWalkPlan(const MultiRobotSpaceInformation &si, std::mt19937 &rng, double maxStep);
+
+    /** \brief All conflicts of \e plan by brute force over every timestep and pair, in (t, i, j) order. */
+    std::vector<Conflict> allConflicts(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan);
 
     /** \brief Straight-line timestep plan of one robot from \e a to \e b (at most 1/resolution per step). */
     std::vector<double> straightLine(const std::vector<double> &a, const std::vector<double> &b, double resolution);
