@@ -60,32 +60,36 @@ bool ompl_parc::Environment::collides(const CollisionBody &body) const
 {
     if (objects_.empty())
         return false;
-    fcl::CollisionRequestd request;
     for (std::size_t i = 0; i < body.size(); ++i)
-    {
-        const Eigen::Vector3d a(body.ax_[i], body.ay_[i], body.az_[i]), b(body.bx_[i], body.by_[i], body.bz_[i]);
-        const double r = body.radius_[i];
-        const fcl::AABBd box(a.cwiseMin(b) - Eigen::Vector3d::Constant(r),
-                             a.cwiseMax(b) + Eigen::Vector3d::Constant(r));
-        const Eigen::Vector3d axis = b - a;
-        const double length = axis.norm();
-        fcl::Transform3d tf = fcl::Transform3d::Identity();
-        tf.translation() = 0.5 * (a + b);
-        if (length > 0.)
-            tf.linear() = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), axis).toRotationMatrix();
-        const fcl::Capsuled capsule(r, length);
-        const fcl::Sphered sphere(r);
-        const fcl::CollisionGeometryd *geometry = length > 0. ? static_cast<const fcl::CollisionGeometryd *>(&capsule)
-                                                              : static_cast<const fcl::CollisionGeometryd *>(&sphere);
-        for (const auto &object : objects_)
-        {
-            if (!object->getAABB().overlap(box))
-                continue;
-            fcl::CollisionResultd result;
-            if (fcl::collide(geometry, tf, object->collisionGeometry().get(), object->getTransform(), request, result) >
-                0)
-                return true;
-        }
-    }
+        if (findCollision(body, i) != nullptr)
+            return true;
     return false;
+}
+
+const ompl_parc::Obstacle *ompl_parc::Environment::findCollision(const CollisionBody &body, std::size_t i) const
+{
+    const Eigen::Vector3d a(body.ax_[i], body.ay_[i], body.az_[i]), b(body.bx_[i], body.by_[i], body.bz_[i]);
+    const double r = body.radius_[i];
+    const fcl::AABBd box(a.cwiseMin(b) - Eigen::Vector3d::Constant(r), a.cwiseMax(b) + Eigen::Vector3d::Constant(r));
+    const Eigen::Vector3d axis = b - a;
+    const double length = axis.norm();
+    fcl::Transform3d tf = fcl::Transform3d::Identity();
+    tf.translation() = 0.5 * (a + b);
+    if (length > 0.)
+        tf.linear() = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), axis).toRotationMatrix();
+    const fcl::Capsuled capsule(r, length);
+    const fcl::Sphered sphere(r);
+    const fcl::CollisionGeometryd *geometry = length > 0. ? static_cast<const fcl::CollisionGeometryd *>(&capsule)
+                                                          : static_cast<const fcl::CollisionGeometryd *>(&sphere);
+    const fcl::CollisionRequestd request;
+    for (std::size_t k = 0; k < objects_.size(); ++k)
+    {
+        const auto &object = objects_[k];
+        if (!object->getAABB().overlap(box))
+            continue;
+        fcl::CollisionResultd result;
+        if (fcl::collide(geometry, tf, object->collisionGeometry().get(), object->getTransform(), request, result) > 0)
+            return &obstacles_[k];
+    }
+    return nullptr;
 }

@@ -54,6 +54,10 @@ namespace ompl_parc
         /** \brief True if any capsule of \e body touches any obstacle. */
         bool collides(const CollisionBody &body) const;
 
+        /** \brief The first obstacle capsule \e capsule of \e body touches, or nullptr: lets error messages
+            name the obstacle, where planning only needs collides(). */
+        const Obstacle *findCollision(const CollisionBody &body, std::size_t capsule) const;
+
       private:
         std::vector<Obstacle> obstacles_;
         std::vector<std::shared_ptr<fcl::CollisionObjectd>> objects_;

@@ -2,6 +2,7 @@
 
 #include "ompl_parc/CapsuleCollision.h"
 
+#include <console_bridge/console.h>
 #include <ompl/util/Exception.h>
 #include <urdf_parser/urdf_parser.h>
 
@@ -10,11 +11,52 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <mutex>
 #include <sstream>
 
 namespace
 {
     const char *const CONTEXT = "UrdfArm";
+
+    /** While it exists, urdfdom's error messages (console_bridge) are kept instead of printed, so that a
+        malformed URDF is reported in one line, with the first of them; other messages go on as before.
+        console_bridge's handler is global: one parse at a time. */
+    class UrdfdomErrors : public console_bridge::OutputHandler
+    {
+      public:
+        UrdfdomErrors() : lock_(mutex()), previous_(console_bridge::getOutputHandler())
+        {
+            console_bridge::useOutputHandler(this);
+        }
+        ~UrdfdomErrors() override { console_bridge::restorePreviousOutputHandler(); }
+        UrdfdomErrors(const UrdfdomErrors &) = delete;
+        UrdfdomErrors &operator=(const UrdfdomErrors &) = delete;
+
+        void log(const std::string &text, console_bridge::LogLevel level, const char *filename, int line) override
+        {
+            if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR)
+            {
+                if (first_.empty())
+                    first_ = text;
+            }
+            else if (previous_ != nullptr)
+                previous_->log(text, level, filename, line);
+        }
+
+        /** \brief The first error urdfdom reported (empty if none). */
+        const std::string &first() const { return first_; }
+
+      private:
+        static std::mutex &mutex()
+        {
+            static std::mutex m;
+            return m;
+        }
+
+        std::lock_guard<std::mutex> lock_;
+        console_bridge::OutputHandler *previous_;
+        std::string first_;
+    };
 
     Eigen::Isometry3d toIsometry(const urdf::Pose &pose)
     {
@@ -92,18 +134,21 @@ ompl_parc::UrdfArm::Chain ompl_parc::UrdfArm::parseChain(const std::string &urdf
                                                          const std::string &tipLink)
 {
     urdf::ModelInterfaceSharedPtr model;
-    try
     {
-        model = urdf::parseURDF(urdfXml);
+        UrdfdomErrors errors;
+        try
+        {
+            model = urdf::parseURDF(urdfXml);
+        }
+        catch (const std::exception &e)
+        {
+            throw ompl::Exception(CONTEXT, std::string("malformed URDF: ") + e.what());
+        }
+        if (!model)
+            throw ompl::Exception(
+                CONTEXT, "malformed URDF: " +
+                             (errors.first().empty() ? std::string("urdfdom could not parse it") : errors.first()));
     }
-    catch (const std::exception &e)
-    {
-        throw ompl::Exception(CONTEXT, std::string("malformed URDF: ") + e.what());
-    }
-    if (!model)
-        throw ompl::Exception(CONTEXT,
-                              "malformed URDF (bad XML, a missing <robot>, a revolute joint without "
-                              "<limit>, or a link tree error; urdfdom printed the details)");
     const auto base = model->getLink(baseLink), tip = model->getLink(tipLink);
     if (!base)
         throw ompl::Exception(CONTEXT, "URDF '" + model->getName() + "' has no base link '" + baseLink + "'");
@@ -214,7 +259,13 @@ ompl_parc::UrdfArm::UrdfArm(std::string name, EnvironmentPtr environment, Chain 
         }
         capsules_.push_back({p.frame, s.pose * (-half), s.pose * half, radius});
     }
-    computeSelfCollisionPairs();
+    std::vector<double> zero(getDimension());
+    for (unsigned int k = 0; k < getDimension(); ++k)
+        zero[k] = std::clamp(0., getBounds().low[k], getBounds().high[k]);
+    CollisionBody body;
+    computeBody(zero.data(), body);
+    computeSelfCollisionPairs(body);
+    checkFixedLinks(body);
 }
 
 std::string ompl_parc::UrdfArm::readFile(const std::string &path)
@@ -238,20 +289,30 @@ Eigen::Isometry3d ompl_parc::UrdfArm::pose(double x, double y, double z, double 
     return t;
 }
 
-void ompl_parc::UrdfArm::computeSelfCollisionPairs()
+void ompl_parc::UrdfArm::computeSelfCollisionPairs(const CollisionBody &zeroBody)
 {
-    std::vector<double> zero(getDimension());
-    for (unsigned int k = 0; k < getDimension(); ++k)
-        zero[k] = std::clamp(0., getBounds().low[k], getBounds().high[k]);
-    CollisionBody body;
-    computeBody(zero.data(), body);
     for (std::size_t i = 0; i < capsules_.size(); ++i)
         for (std::size_t j = i + 1; j < capsules_.size(); ++j)
         {
             const std::size_t fi = capsules_[i].frame, fj = capsules_[j].frame;
-            if (std::max(fi, fj) - std::min(fi, fj) >= 2 && !capsulesCollide(body, i, body, j))
+            if (std::max(fi, fj) - std::min(fi, fj) >= 2 && !capsulesCollide(zeroBody, i, zeroBody, j))
                 selfCollisionPairs_.emplace_back(i, j);
         }
+}
+
+void ompl_parc::UrdfArm::checkFixedLinks(const CollisionBody &body) const
+{
+    if (!getEnvironment())
+        return;
+    for (std::size_t k = 0; k < capsules_.size(); ++k)
+    {
+        if (capsules_[k].frame != 0)
+            continue;
+        if (const Obstacle *obstacle = getEnvironment()->findCollision(body, k))
+            throw ompl::Exception(CONTEXT, "robot '" + getName() + "': link '" + primitives_[k].shape.name +
+                                               "', fixed to the base, collides with obstacle '" + obstacle->name +
+                                               "' at this base pose (every configuration would be invalid)");
+    }
 }
 
 void ompl_parc::UrdfArm::computeFrames(const double *q, std::vector<Eigen::Isometry3d> &frames) const

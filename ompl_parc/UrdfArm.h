@@ -41,7 +41,8 @@ namespace ompl_parc
 
         /** \brief The chain \e baseLink .. \e tipLink of the URDF document \e urdfXml, its base link placed at
             \e basePose in the world. Throws ompl::Exception naming the offending element for malformed
-            URDF, missing links, unsupported joints or geometry, and non-serial chains. */
+            URDF, missing links, unsupported joints or geometry, non-serial chains, and a base pose that puts
+            the base link (or a link fixed to it) into an obstacle of \e environment (as it is now). */
         UrdfArm(std::string name, EnvironmentPtr environment, const std::string &urdfXml, const std::string &baseLink,
                 const std::string &tipLink, const Eigen::Isometry3d &basePose);
 
@@ -104,8 +105,14 @@ namespace ompl_parc
 
         UrdfArm(std::string name, EnvironmentPtr environment, Chain chain, const Eigen::Isometry3d &basePose);
 
-        /** \brief Self-collision pairs: primitives of non-adjacent links not overlapping at zero. */
-        void computeSelfCollisionPairs();
+        /** \brief Self-collision pairs: primitives of non-adjacent links not overlapping in \e zeroBody (the
+            body at the zero configuration). */
+        void computeSelfCollisionPairs(const CollisionBody &zeroBody);
+
+        /** \brief Throws ompl::Exception naming the link and the obstacle if a link that never moves (the base
+            link and what is fixed to it) collides with the environment in \e body: no configuration could be
+            valid, so the base pose is bad input, not a planning problem. */
+        void checkFixedLinks(const CollisionBody &body) const;
 
         Eigen::Isometry3d basePose_;
         std::string urdfXml_, baseLink_, tipLink_;

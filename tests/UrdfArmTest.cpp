@@ -37,11 +37,12 @@ namespace
 )" + extra + "</robot>";
     }
 
-    void expectError(const std::string &urdf, const std::string &needle)
+    void expectError(const std::string &urdf, const std::string &needle, const std::string &baseLink = "base",
+                     const std::string &tipLink = "tip")
     {
         try
         {
-            UrdfArm("arm", nullptr, urdf, "base", "tip", Eigen::Isometry3d::Identity());
+            UrdfArm("arm", nullptr, urdf, baseLink, tipLink, Eigen::Isometry3d::Identity());
             ADD_FAILURE() << "no error, expected one mentioning '" << needle << "'";
         }
         catch (const ompl::Exception &e)
@@ -125,7 +126,8 @@ TEST(UrdfArm, ContinuousJointsAreBoundedToPlusMinusPi)
 TEST(UrdfArm, ClearErrorsNameTheElement)
 {
     expectError("<robot name=\"broken\"><link name=\"a\"></robot>", "malformed URDF");
-    expectError(smallArm("revolute", ""), "malformed URDF");  // urdfdom rejects a revolute joint without <limit>
+    // urdfdom rejects a revolute joint without <limit>; its first error is the message's one line.
+    expectError(smallArm("revolute", ""), "malformed URDF: Joint [j2] is of type REVOLUTE but it does not specify");
     expectError(smallArm("prismatic"), "joint 'j2'");
     expectError(smallArm("revolute", "<limit lower=\"1\" upper=\"-1\" effort=\"1\" velocity=\"1\"/>"), "joint 'j2'");
     expectError(smallArm("revolute", "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>",
@@ -136,9 +138,33 @@ TEST(UrdfArm, ClearErrorsNameTheElement)
                          "<link name=\"side\"/><joint name=\"branch\" type=\"revolute\"><parent link=\"upper\"/>"
                          "<child link=\"side\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>"),
                 "non-serial chain: movable joint 'branch'");
-    EXPECT_THROW(UrdfArm("arm", nullptr, smallArm(), "base", "nowhere", Eigen::Isometry3d::Identity()),
-                 ompl::Exception);
-    EXPECT_THROW(UrdfArm("arm", nullptr, smallArm(), "tip", "base", Eigen::Isometry3d::Identity()), ompl::Exception);
+    expectError(smallArm(), "no tip link 'nowhere'", "base", "nowhere");
+    expectError(smallArm(), "tip link 'base' is not below base link 'tip'", "tip", "base");
+    expectError(smallArm(), "chain 'lower' .. 'tip' has no movable joint", "lower", "tip");
+}
+
+TEST(UrdfArm, ABasePoseThatPutsAFixedLinkIntoAnObstacleNamesBoth)
+{
+    // The small arm's base sphere (radius 0.1, never moving) 0.15 from a box's face: fine at 0.15, not at 0.05.
+    auto environment = std::make_shared<Environment>();
+    Obstacle wall;
+    wall.name = "wall";
+    wall.size = Eigen::Vector3d(0.2, 2., 2.);
+    wall.pose.translation() = Eigen::Vector3d(1., 0., 0.);
+    environment->addObstacle(wall);
+    EXPECT_NO_THROW(UrdfArm("arm", environment, smallArm(), "base", "tip", UrdfArm::pose(0.75, 0., 0., 0., 0., 0.)));
+    try
+    {
+        UrdfArm("arm", environment, smallArm(), "base", "tip", UrdfArm::pose(0.85, 0., 0., 0., 0., 0.));
+        ADD_FAILURE() << "no error";
+    }
+    catch (const ompl::Exception &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("robot 'arm': link 'base', fixed to the base, collides with obstacle "
+                                             "'wall'"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(UrdfArm, PositionIkReachesTargets)
