@@ -3,17 +3,21 @@
 #include "ompl_parc/DiscRobot.h"
 #include "ompl_parc/PlanarArm.h"
 #include "ompl_parc/UrdfArm.h"
+#include "ompl_parc/scenarios/PandaCage.h"
 
 #include <nlohmann/json.hpp>
 #include <ompl/util/Exception.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
 
 using nlohmann::json;
+using nlohmann::ordered_json;  // written files keep their fields in a readable order
 
 namespace
 {
@@ -110,7 +114,15 @@ namespace
         return out;
     }
 
-    json boundsToJson(const ompl::base::RealVectorBounds &b)
+    /** The URDF models compiled into the library, by the name "builtin_urdf" gives them. */
+    const std::map<std::string, const std::string &(*)()> &builtinUrdfs()
+    {
+        static const std::map<std::string, const std::string &(*)()> table = {
+            {"panda", &ompl_parc::scenarios::pandaUrdf}};
+        return table;
+    }
+
+    ordered_json boundsToJson(const ompl::base::RealVectorBounds &b)
     {
         return {{"low", b.low}, {"high", b.high}};
     }
@@ -138,14 +150,14 @@ namespace
         return Eigen::Translation3d(p[0], p[1], p[2]) * rotation.normalized();
     }
 
-    json poseToJson(const Eigen::Isometry3d &pose)
+    ordered_json poseToJson(const Eigen::Isometry3d &pose)
     {
         const Eigen::Vector3d p = pose.translation();
         const Eigen::Quaterniond q(pose.rotation());
         return {{"position", {p.x(), p.y(), p.z()}}, {"orientation", {q.w(), q.x(), q.y(), q.z()}}};
     }
 
-    json obstacleToJson(const ompl_parc::Obstacle &o)
+    ordered_json obstacleToJson(const ompl_parc::Obstacle &o)
     {
         using Shape = ompl_parc::Obstacle::Shape;
         const Eigen::Vector3d p = o.pose.translation();
@@ -156,8 +168,7 @@ namespace
                     {"center", {p.x(), p.y()}},
                     {"size", {o.size.x(), o.size.y()}},
                     {"yaw", yaw}};
-        json out = poseToJson(o.pose);
-        out["name"] = o.name;
+        ordered_json out = {{"name", o.name}};
         switch (o.shape)
         {
             case Shape::BOX:
@@ -174,6 +185,7 @@ namespace
                 out["length"] = o.size.z();
                 break;
         }
+        out.update(poseToJson(o.pose));
         return out;
     }
 
@@ -225,9 +237,9 @@ namespace
         environment.addObstacle(o);
     }
 
-    json robotToJson(const ompl_parc::Robot &robot)
+    ordered_json robotToJson(const ompl_parc::Robot &robot)
     {
-        json out = {{"name", robot.getName()}, {"kind", robot.getKind()}};
+        ordered_json out = {{"name", robot.getName()}, {"kind", robot.getKind()}};
         if (const auto *disc = dynamic_cast<const ompl_parc::DiscRobot *>(&robot))
         {
             out["radius"] = disc->getRadius();
@@ -242,7 +254,14 @@ namespace
         }
         else if (const auto *urdf = dynamic_cast<const ompl_parc::UrdfArm *>(&robot))
         {
-            out["urdf"] = urdf->getUrdfXml();  // inline: the file stays self-contained
+            // A built-in model by name, anything else inline: either way the file stays self-contained.
+            const auto &models = builtinUrdfs();
+            const auto builtin = std::find_if(models.begin(), models.end(),
+                                              [&](const auto &model) { return model.second() == urdf->getUrdfXml(); });
+            if (builtin != models.end())
+                out["builtin_urdf"] = builtin->first;
+            else
+                out["urdf"] = urdf->getUrdfXml();
             out["base_link"] = urdf->getBaseLink();
             out["tip_link"] = urdf->getTipLink();
             out["base_pose"] = poseToJson(urdf->getBasePose());
@@ -252,10 +271,38 @@ namespace
         return out;
     }
 
+    /** The URDF text of urdf_arm \e value: inline ("urdf"), a built-in model ("builtin_urdf") or a file
+        ("urdf_file", relative paths from \e folder, the scenario file's folder). */
+    std::string urdfFromJson(const json &value, const std::string &where, const std::string &folder)
+    {
+        if (value.contains("urdf") + value.contains("builtin_urdf") + value.contains("urdf_file") != 1)
+            fail(where +
+                 " needs exactly one of 'urdf' (the XML), 'builtin_urdf' (a model's name) or 'urdf_file' "
+                 "(a path)");
+        if (value.contains("urdf"))
+            return nonEmptyString(value.at("urdf"), where + ".urdf");
+        if (value.contains("builtin_urdf"))
+        {
+            const std::string model = nonEmptyString(value.at("builtin_urdf"), where + ".builtin_urdf");
+            const auto it = builtinUrdfs().find(model);
+            if (it == builtinUrdfs().end())
+            {
+                std::string valid;
+                for (const auto &entry : builtinUrdfs())
+                    valid += (valid.empty() ? "" : ", ") + entry.first;
+                fail(where + ".builtin_urdf must be one of " + valid + " (got '" + model + "')");
+            }
+            return it->second();
+        }
+        const std::filesystem::path file = nonEmptyString(value.at("urdf_file"), where + ".urdf_file");
+        return ompl_parc::UrdfArm::readFile(
+            (file.is_relative() ? std::filesystem::path(folder) / file : file).string());
+    }
+
     /** The robot described by \e value; its start and goal go to \e start and \e goal. */
     ompl_parc::RobotPtr robotFromJson(const json &value, const std::string &where,
-                                      const ompl_parc::EnvironmentPtr &environment, std::vector<double> &start,
-                                      std::vector<double> &goal)
+                                      const ompl_parc::EnvironmentPtr &environment, const std::string &folder,
+                                      std::vector<double> &start, std::vector<double> &goal)
     {
         requireObject(value, where);
         const std::string name = nonEmptyString(field(value, "name", where), where + ".name");
@@ -286,17 +333,12 @@ namespace
         }
         else if (kind == "urdf_arm")
         {
-            // The URDF inline ("urdf": the XML) or by file ("urdf_file": a path), the chain's end links, and
-            // the base pose ("base_pose": position and orientation quaternion).
+            // The URDF, the chain's end links, and the base pose ("base_pose": position and orientation).
             allowOnly(value,
-                      {"name", "kind", "urdf", "urdf_file", "base_link", "tip_link", "base_pose", "start", "goal"},
+                      {"name", "kind", "urdf", "builtin_urdf", "urdf_file", "base_link", "tip_link", "base_pose",
+                       "start", "goal"},
                       where);
-            if (value.contains("urdf") == value.contains("urdf_file"))
-                fail(where + " needs exactly one of 'urdf' (the XML) or 'urdf_file' (a path)");
-            const std::string xml =
-                value.contains("urdf")
-                    ? nonEmptyString(value.at("urdf"), where + ".urdf")
-                    : ompl_parc::UrdfArm::readFile(nonEmptyString(value.at("urdf_file"), where + ".urdf_file"));
+            const std::string xml = urdfFromJson(value, where, folder);
             Eigen::Isometry3d base = Eigen::Isometry3d::Identity();
             if (value.contains("base_pose"))
             {
@@ -315,6 +357,27 @@ namespace
         return robot;
     }
 
+    /** \e doc with one line per top-level field and per obstacle and robot, as in the hand-written examples:
+        compact, and a diff shows which robot changed. */
+    std::string layOut(const ordered_json &doc)
+    {
+        std::string out = "{";
+        for (const auto &field : doc.items())
+        {
+            out += (out.size() == 1 ? "\n  " : ",\n  ") + ordered_json(field.key()).dump() + ": ";
+            const ordered_json &value = field.value();
+            if (!value.is_array() || value.empty() || !value.front().is_object())
+            {
+                out += value.dump();
+                continue;
+            }
+            for (std::size_t i = 0; i < value.size(); ++i)
+                out += (i == 0 ? "[\n    " : ",\n    ") + value[i].dump();
+            out += "\n  ]";
+        }
+        return out + "\n}";
+    }
+
     /** "at line L, column C: ..." of a nlohmann parse error, without its "[json.exception...] " prefix. */
     std::string syntaxError(const json::parse_error &e)
     {
@@ -328,27 +391,27 @@ std::string ompl_parc::ScenarioFile::toJson(const MultiRobotProblem &problem)
 {
     const auto &si = *problem.getSpaceInformation();
     const EnvironmentPtr &environment = si.getRobot(0)->getEnvironment();
-    json obstacles = json::array();
+    ordered_json obstacles = ordered_json::array();
     for (const auto &o : environment->getObstacles())
         obstacles.push_back(obstacleToJson(o));
-    json robots = json::array();
+    ordered_json robots = ordered_json::array();
     for (std::size_t i = 0; i < si.getRobotCount(); ++i)
     {
         const Robot &robot = *si.getRobot(i);
         if (robot.getEnvironment() != environment)
             fail("robot '" + robot.getName() + "' has an Environment of its own; a scenario file has one");
-        json entry = robotToJson(robot);
+        ordered_json entry = robotToJson(robot);
         entry["start"] = problem.getStart(i);
         entry["goal"] = problem.getGoal(i);
         robots.push_back(std::move(entry));
     }
-    const json doc = {{"format", FORMAT},
-                      {"version", VERSION},
-                      {"name", problem.getName()},
-                      {"resolution", si.getResolution()},
-                      {"obstacles", std::move(obstacles)},
-                      {"robots", std::move(robots)}};
-    return doc.dump(2);
+    const ordered_json doc = {{"format", FORMAT},
+                              {"version", VERSION},
+                              {"name", problem.getName()},
+                              {"resolution", si.getResolution()},
+                              {"obstacles", std::move(obstacles)},
+                              {"robots", std::move(robots)}};
+    return layOut(doc);
 }
 
 void ompl_parc::ScenarioFile::write(const std::string &path, const MultiRobotProblem &problem)
@@ -369,10 +432,10 @@ ompl_parc::MultiRobotProblem ompl_parc::ScenarioFile::read(const std::string &pa
         fail("cannot open '" + path + "'");
     std::stringstream text;
     text << in.rdbuf();
-    return fromJson(text.str());
+    return fromJson(text.str(), std::filesystem::path(path).parent_path().string());
 }
 
-ompl_parc::MultiRobotProblem ompl_parc::ScenarioFile::fromJson(const std::string &text)
+ompl_parc::MultiRobotProblem ompl_parc::ScenarioFile::fromJson(const std::string &text, const std::string &folder)
 {
     json doc;
     try
@@ -414,7 +477,7 @@ ompl_parc::MultiRobotProblem ompl_parc::ScenarioFile::fromJson(const std::string
     for (std::size_t i = 0; i < robots.size(); ++i)
     {
         const std::string where = "robots[" + std::to_string(i) + "]";
-        team.push_back(robotFromJson(robots[i], where, environment, starts[i], goals[i]));
+        team.push_back(robotFromJson(robots[i], where, environment, folder, starts[i], goals[i]));
         const auto [previous, fresh] = names.emplace(team.back()->getName(), i);
         if (!fresh)
             fail(where + ".name '" + team.back()->getName() + "' is already used by robots[" +

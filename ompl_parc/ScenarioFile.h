@@ -27,14 +27,21 @@ namespace ompl_parc
             {"name": "arm0", "kind": "planar_arm", "base": {"x": 0, "y": 0, "yaw": 0},
              "link_lengths": [0.3, 0.3], "link_width": 0.1,
              "joint_limits": {"low": [-3.14, -3.14], "high": [3.14, 3.14]},
-             "start": [0.5, 0], "goal": [-0.5, 0]}
+             "start": [0.5, 0], "goal": [-0.5, 0]},
+            {"name": "panda0", "kind": "urdf_arm", "builtin_urdf": "panda",
+             "base_link": "panda_link0", "tip_link": "panda_link8",
+             "base_pose": {"position": [0, 0, 0], "orientation": [1, 0, 0, 0]},   // optional, identity
+             "start": [0, 0, 0, -1.5, 0, 1.5, 0], "goal": [0, 0.5, 0, -1.5, 0, 2, 0]}
           ]
         }
         \endcode
         Obstacles: "box" (full extents), "sphere", "cylinder" (along its local z axis), placed by
         "position" (default origin) and a unit quaternion "orientation" [w, x, y, z] (default identity);
         "box2d" is a footprint extruded over z in [-1, 1], turned by "yaw", as Environment::addBox2D().
-        Obstacle names are optional. Robot kinds: "disc" and "planar_arm" ("urdf_arm" is reserved).
+        Obstacle names are optional. Robot kinds: "disc", "planar_arm" and "urdf_arm" (UrdfArm: the chain
+        "base_link" .. "tip_link" of a URDF given by exactly one of "urdf" (the XML inline), "builtin_urdf"
+        (a model compiled into the library: "panda", scenarios::pandaUrdf()) or "urdf_file" (a path, relative
+        to the scenario file's folder). write() names a built-in model rather than inlining it.
 
         Reading is strict so mistakes surface at load time, not as odd plans: every value is type- and
         range-checked, unknown fields are rejected (typos), robot names must be unique, and the starts and
@@ -53,8 +60,9 @@ namespace ompl_parc
         /** \brief Read a problem from \e path. */
         static MultiRobotProblem read(const std::string &path);
 
-        /** \brief Parse a problem from JSON text. */
-        static MultiRobotProblem fromJson(const std::string &text);
+        /** \brief Parse a problem from JSON text; relative "urdf_file" paths start from \e folder (the current
+            directory if empty). */
+        static MultiRobotProblem fromJson(const std::string &text, const std::string &folder = "");
     };
 }  // namespace ompl_parc
 

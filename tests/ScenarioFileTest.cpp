@@ -4,6 +4,7 @@
 #include "ompl_parc/ScenarioFile.h"
 #include "ompl_parc/SolutionValidator.h"
 #include "ompl_parc/planners/ARC.h"
+#include "ompl_parc/scenarios/PandaCage.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 #include <ompl/util/Exception.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -91,10 +93,10 @@ namespace
         }
     }
 
-    /** The error message for the example file doorway_swap edited by \e edit. */
-    std::string errorFor(const std::function<void(json &)> &edit)
+    /** The error message for the scenario \e text (default: the example file doorway_swap) edited by \e edit. */
+    std::string errorFor(const std::function<void(json &)> &edit, const std::string &text = "")
     {
-        json doc = json::parse(slurp(examplePath("doorway_swap")));
+        json doc = json::parse(text.empty() ? slurp(examplePath("doorway_swap")) : text);
         edit(doc);
         try
         {
@@ -189,6 +191,36 @@ TEST(ScenarioFile, ErrorsNameTheField)
         EXPECT_TRUE(has(e.what(), "not valid JSON at line 3, column")) << e.what();
     }
     EXPECT_THROW(ScenarioFile::read(testing::TempDir() + "/no_such_scenario.json"), ompl::Exception);
+}
+
+TEST(ScenarioFile, UrdfArmsNameABuiltInModelOrAFileBesideTheScenario)
+{
+    // Written Pandas name the built-in model instead of inlining its URDF.
+    const auto panda = scenarios::createPandaCage(2, 0);
+    auto doc = json::parse(ScenarioFile::toJson(panda));
+    EXPECT_EQ(doc["robots"][0]["builtin_urdf"], "panda");
+    EXPECT_FALSE(doc["robots"][0].contains("urdf"));
+
+    // A relative "urdf_file" is found beside the scenario file, whatever the current folder.
+    const std::string folder = testing::TempDir() + "/ompl_parc_urdf_scenario";
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder + "/arm.urdf") << scenarios::pandaUrdf();
+    doc["robots"][0].erase("builtin_urdf");
+    doc["robots"][0]["urdf_file"] = "arm.urdf";
+    std::ofstream(folder + "/scenario.json") << doc.dump();
+    const auto loaded = ScenarioFile::read(folder + "/scenario.json");
+    EXPECT_EQ(dynamic_cast<const UrdfArm &>(*loaded.getSpaceInformation()->getRobot(0)).getUrdfXml(),
+              scenarios::pandaUrdf());
+    EXPECT_EQ(ScenarioFile::toJson(loaded), ScenarioFile::toJson(panda));
+    std::filesystem::remove_all(folder);
+
+    const std::string written = ScenarioFile::toJson(panda);
+    EXPECT_NE(errorFor([](json &d) { d["robots"][1]["builtin_urdf"] = "kuka"; }, written)
+                  .find("robots[1].builtin_urdf must be one of panda (got 'kuka')"),
+              std::string::npos);
+    EXPECT_NE(
+        errorFor([](json &d) { d["robots"][1]["urdf"] = "<robot/>"; }, written).find("robots[1] needs exactly one of"),
+        std::string::npos);
 }
 
 class ScenarioExample : public testing::TestWithParam<std::pair<std::string, std::string>>
