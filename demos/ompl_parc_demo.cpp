@@ -1,10 +1,11 @@
 /* ompl_parc_demo: solve a built-in multi-robot scenario or a scenario file with one of our planners (or OMPL's
    RRTConnect over the composite space), re-check the result with the independent validator and optionally
-   draw it (SVG).
+   draw it (SVG for 2D problems; for 3D ones --geometry writes the shapes scripts/draw_panda_cage.py draws).
    Exit 0: solved and validated; 1: not solved in time (or invalid); 2: bad input. */
 #include "ProgressLine.h"
 #include "ToolSupport.h"
 
+#include "ompl_parc/GeometryFile.h"
 #include "ompl_parc/SolutionFile.h"
 #include "ompl_parc/SolutionValidator.h"
 #include "ompl_parc/SvgWriter.h"
@@ -55,8 +56,10 @@ int main(int argc, char **argv)
                 "out", po::value<std::string>(), "write the solution to this JSON file")(
                 "picture", po::value<std::string>(),
                 "draw the solution (or, unsolved, the problem) to this SVG file, animated")(
-                "picture-static", "make --picture a static snapshot: starts, goals and traced paths")("help,h",
-                                                                                                      "show this help");
+                "picture-static", "make --picture a static snapshot: starts, goals and traced paths")(
+                "geometry", po::value<std::string>(),
+                "write the world-frame shapes of the problem and solution (JSON, for scripts/draw_panda_cage.py)")(
+                "help,h", "show this help");
             const auto vm = tools::parse(argc, argv, options);
             if (vm.count("help"))
             {
@@ -95,15 +98,26 @@ int main(int argc, char **argv)
             std::cout << "status     " << status.asString() << " after " << std::fixed << std::setprecision(3)
                       << planTime << " s\n";
             printStatistics(*planner);
-            SvgOptions picture;
-            picture.animate = vm.count("picture-static") == 0;
-            if (status != ompl::base::PlannerStatus::EXACT_SOLUTION)
+            // The pictures of the solution, or of the problem alone if there is none.
+            const auto writePictures = [&](const MultiRobotPlan *plan)
             {
+                const char *only = plan == nullptr ? " (the problem only)" : "";
                 if (vm.count("picture"))
                 {
-                    SvgWriter::write(vm["picture"].as<std::string>(), problem, nullptr, picture);
-                    std::cout << "picture    " << vm["picture"].as<std::string>() << " (the problem only)\n";
+                    SvgOptions picture;
+                    picture.animate = vm.count("picture-static") == 0;
+                    SvgWriter::write(vm["picture"].as<std::string>(), problem, plan, picture);
+                    std::cout << "picture    " << vm["picture"].as<std::string>() << only << std::endl;
                 }
+                if (vm.count("geometry"))
+                {
+                    GeometryFile::write(vm["geometry"].as<std::string>(), problem, plan);
+                    std::cout << "geometry   " << vm["geometry"].as<std::string>() << only << std::endl;
+                }
+            };
+            if (status != ompl::base::PlannerStatus::EXACT_SOLUTION)
+            {
+                writePictures(nullptr);
                 return static_cast<int>(tools::EXIT_FAILED);
             }
 
@@ -118,11 +132,7 @@ int main(int argc, char **argv)
                 SolutionFile::write(vm["out"].as<std::string>(), plan, *si);
                 std::cout << "solution   " << vm["out"].as<std::string>() << std::endl;
             }
-            if (vm.count("picture"))
-            {
-                SvgWriter::write(vm["picture"].as<std::string>(), problem, &plan, picture);
-                std::cout << "picture    " << vm["picture"].as<std::string>() << std::endl;
-            }
+            writePictures(&plan);
             return static_cast<int>(report.valid ? tools::EXIT_SOLVED : tools::EXIT_FAILED);
         });
 }

@@ -121,6 +121,17 @@ std::size_t ompl_parc::MultiRobotPlan::getSumOfCosts() const
     return s;
 }
 
+std::vector<std::size_t> ompl_parc::MultiRobotPlan::sampleTimesteps(std::size_t maxCount) const
+{
+    const std::size_t makespan = getMakespan();
+    const std::size_t count = std::max<std::size_t>(2, std::min<std::size_t>(maxCount, makespan + 1));
+    std::vector<std::size_t> times;
+    for (std::size_t k = 0; k < count; ++k)
+        times.push_back(
+            static_cast<std::size_t>(std::llround(static_cast<double>(k * makespan) / static_cast<double>(count - 1))));
+    return times;
+}
+
 og::PathGeometricPtr ompl_parc::MultiRobotPlan::toPathGeometric(const MultiRobotSpaceInformationPtr &si) const
 {
     if (si->getRobotCount() != getRobotCount())

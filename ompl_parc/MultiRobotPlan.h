@@ -51,6 +51,11 @@ namespace ompl_parc
         /** \brief Sum of the robots' arrival timesteps. */
         std::size_t getSumOfCosts() const;
 
+        /** \brief Up to \e maxCount timesteps spread evenly (rounded) over 0 .. makespan, both ends included
+            (at least 2, so a plan that never moves still gives a start and an end): the frames pictures
+            draw of a long plan. */
+        std::vector<std::size_t> sampleTimesteps(std::size_t maxCount) const;
+
         /** \brief One composite state per timestep 0..makespan (returned by pointer: such paths are large and
             OMPL's PathGeometric copies its states, so it is built once, in place). */
         ompl::geometric::PathGeometricPtr toPathGeometric(const MultiRobotSpaceInformationPtr &si) const;

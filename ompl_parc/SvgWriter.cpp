@@ -155,12 +155,8 @@ namespace
                 throw ompl::Exception("SvgWriter", "the plan has " + std::to_string(plan_->getRobotCount()) +
                                                        " robots, the problem " +
                                                        std::to_string(problem_.getRobotCount()));
-            const std::size_t makespan = plan_ != nullptr ? plan_->getMakespan() : 0;
-            const std::size_t count =
-                std::max<std::size_t>(2, std::min<std::size_t>(options_.maxKeyframes, makespan + 1));
-            for (std::size_t k = 0; k < count && plan_ != nullptr; ++k)
-                times_.push_back(static_cast<std::size_t>(
-                    std::llround(static_cast<double>(k * makespan) / static_cast<double>(count - 1))));
+            if (plan_ != nullptr)
+                times_ = plan_->sampleTimesteps(options_.maxKeyframes);
         }
 
         std::string build()
