@@ -26,12 +26,12 @@ ompl_parc::MultiRobotProblem ompl_parc::tools::problemFromOptions(const po::vari
 {
     if (vm.count("scenario-file"))
     {
-        if (!vm["scenario"].defaulted() || !vm["robots"].defaulted())
-            throw std::invalid_argument("give --scenario-file or --scenario/--robots, not both");
+        if (!vm["scenario"].defaulted() || !vm["robots"].defaulted() || !vm["task"].defaulted())
+            throw std::invalid_argument("give --scenario-file or --scenario/--robots/--task, not both");
         return ScenarioFile::read(vm["scenario-file"].as<std::string>());  // checks the endpoints itself
     }
-    MultiRobotProblem problem =
-        scenarios::createScenario(vm["scenario"].as<std::string>(), vm["robots"].as<std::size_t>());
+    MultiRobotProblem problem = scenarios::createScenario(
+        vm["scenario"].as<std::string>(), vm["robots"].as<std::size_t>(), 128., vm["task"].as<std::size_t>());
     const std::string reason = problem.checkEndpoints();
     if (!reason.empty())
         throw std::invalid_argument(reason);
@@ -85,6 +85,7 @@ void ompl_parc::tools::addProblemOptions(po::options_description &options)
     options.add_options()("scenario", po::value<std::string>()->default_value("mobile_cross"),
                           ("built-in scenario: " + names).c_str())("robots", po::value<std::size_t>()->default_value(4),
                                                                    "number of robots of the built-in scenario")(
+        "task", po::value<std::size_t>()->default_value(0), "task of the built-in scenario (panda_cage: 0 to 4)")(
         "scenario-file", po::value<std::string>(), "read the problem from this scenario file (JSON) instead");
 }
 

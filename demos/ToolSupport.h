@@ -21,10 +21,10 @@ namespace ompl_parc::tools
         EXIT_BAD_INPUT = 2
     };
 
-    /** \brief Adds --scenario, --robots and --scenario-file to \e options. */
+    /** \brief Adds --scenario, --robots, --task and --scenario-file to \e options. */
     void addProblemOptions(boost::program_options::options_description &options);
 
-    /** \brief Builds the problem named by --scenario/--robots, or read from --scenario-file, and checks
+    /** \brief Builds the problem named by --scenario/--robots/--task, or read from --scenario-file, and checks
         its starts and goals; throws (std::invalid_argument, ompl::Exception) with a one-line reason on
         bad input. */
     MultiRobotProblem problemFromOptions(const boost::program_options::variables_map &vm);

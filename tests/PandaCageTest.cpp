@@ -1,48 +1,120 @@
-#include "TestProblems.h"
-
+#include "ompl_parc/ScenarioFile.h"
+#include "ompl_parc/SolutionValidator.h"
 #include "ompl_parc/UrdfArm.h"
 #include "ompl_parc/planners/ARC.h"
+#include "ompl_parc/scenarios/ConflictingPairs.h"
 #include "ompl_parc/scenarios/PandaCage.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 
+#include <nlohmann/json.hpp>
 #include <ompl/util/Exception.h>
 
 #include <gtest/gtest.h>
 
-#include <cmath>
+#include <fstream>
+#include <sstream>
 
 using namespace ompl_parc;
 namespace ob = ompl::base;
 
-TEST(PandaCage, TasksAreValidWithEndEffectorsInsideTheCage)
+namespace
 {
-    for (std::size_t robots : {2, 4, 8})
+    std::string storedFile(std::size_t robots, std::size_t task)
+    {
+        return std::string(OMPL_PARC_SCENARIO_DIR) + "/panda_cage/panda_cage_" + std::to_string(robots) + "_" +
+               std::to_string(task) + ".json";
+    }
+
+    /** Every start and goal valid, pairwise collision-free, and every end effector inside the cage. */
+    void expectValidTask(const MultiRobotProblem &problem)
+    {
+        EXPECT_EQ(problem.checkEndpoints(), "");
+        const auto &si = *problem.getSpaceInformation();
+        for (std::size_t i = 0; i < si.getRobotCount(); ++i)
+        {
+            const auto &arm = dynamic_cast<const UrdfArm &>(*si.getRobot(i));
+            for (const auto *q : {&problem.getStart(i), &problem.getGoal(i)})
+                EXPECT_TRUE(scenarios::pandaCageInterior().contains(arm.computeTipPose(q->data()).translation()))
+                    << arm.getName();
+        }
+    }
+
+    /** The message of the ompl::Exception \e body throws ("no error" if none). */
+    template <typename Body>
+    std::string errorOf(const Body &body)
+    {
+        try
+        {
+            body();
+        }
+        catch (const ompl::Exception &e)
+        {
+            return e.what();
+        }
+        return "no error";
+    }
+}  // namespace
+
+TEST(PandaCage, StoredTasksAreValidWithEndEffectorsInsideTheCage)
+{
+    for (std::size_t robots : scenarios::pandaCageTeamSizes())
         for (std::size_t task = 0; task < scenarios::PANDA_CAGE_TASKS; ++task)
         {
+            SCOPED_TRACE(std::to_string(robots) + " robots, task " + std::to_string(task));
             const auto problem = scenarios::createPandaCage(robots, task);
-            const auto &si = *problem.getSpaceInformation();
-            ASSERT_EQ(si.getRobotCount(), robots);
-            EXPECT_TRUE(problem.checkEndpoints().empty()) << robots << "/" << task << ": " << problem.checkEndpoints();
-            for (std::size_t i = 0; i < robots; ++i)
-            {
-                const auto &arm = dynamic_cast<const UrdfArm &>(*si.getRobot(i));
-                for (const auto *q : {&problem.getStart(i), &problem.getGoal(i)})
-                {
-                    EXPECT_TRUE(arm.isValid(q->data()));
-                    const Eigen::Vector3d tip = arm.computeTipPose(q->data()).translation();
-                    EXPECT_LT(std::max(std::abs(tip.x()), std::abs(tip.y())), 0.35 + (robots > 4 ? 0.1 : 0.));
-                    for (std::size_t j = 0; j < i; ++j)
-                    {
-                        const auto *other = q == &problem.getStart(i) ? &problem.getStart(j) : &problem.getGoal(j);
-                        EXPECT_FALSE(si.robotsCollide(i, q->data(), j, other->data()));
-                    }
-                }
-            }
+            ASSERT_EQ(problem.getRobotCount(), robots);
+            EXPECT_EQ(problem.getName(), "panda_cage_" + std::to_string(robots) + "_" + std::to_string(task));
+            expectValidTask(problem);
         }
-    EXPECT_EQ(scenarios::createScenario("panda_cage", 2).getStart(0), scenarios::createPandaCage(2, 0).getStart(0));
     EXPECT_THROW(scenarios::createPandaCage(3), ompl::Exception);
-    EXPECT_THROW(scenarios::createPandaCage(16), ompl::Exception);
+    EXPECT_THROW(scenarios::createPandaCage(32), ompl::Exception);
     EXPECT_THROW(scenarios::createPandaCage(4, scenarios::PANDA_CAGE_TASKS), ompl::Exception);
+}
+
+TEST(PandaCage, BuiltInTasksAreTheStoredFiles)
+{
+    for (std::size_t robots : scenarios::pandaCageTeamSizes())
+        for (std::size_t task = 0; task < scenarios::PANDA_CAGE_TASKS; ++task)
+        {
+            SCOPED_TRACE(storedFile(robots, task));
+            std::ifstream in(storedFile(robots, task));
+            std::stringstream text;
+            text << in.rdbuf();
+            EXPECT_EQ(scenarios::pandaCageTaskJson(robots, task), text.str());
+            // The --scenario and --scenario-file routes build the same problem (same serialisation).
+            EXPECT_EQ(ScenarioFile::toJson(scenarios::createScenario("panda_cage", robots, 128., task)),
+                      ScenarioFile::toJson(ScenarioFile::read(storedFile(robots, task))));
+        }
+    EXPECT_EQ(scenarios::createPandaCage(4, 1, 64.).getSpaceInformation()->getResolution(), 64.);
+    EXPECT_TRUE(errorOf([] { scenarios::createScenario("mobile_cross", 4, 128., 1); }).find("only task 0") !=
+                std::string::npos);
+}
+
+TEST(PandaCage, GeneratorMakesValidTasksThatNeedCoordination)
+{
+    const auto problem = scenarios::generatePandaCageTask(4, 0);
+    expectValidTask(problem);
+    EXPECT_GT(scenarios::countConflictingPairs(problem), 0u);
+}
+
+TEST(PandaCage, BaseInABarIsNamedInTheError)
+{
+    // Panda 0 moved onto post bar0 at (-0.5, -1): its base link (which never moves) is inside the bar.
+    auto doc = nlohmann::json::parse(scenarios::pandaCageTaskJson(2, 0));
+    doc["robots"][0]["base_pose"]["position"] = {-0.5, -1.0, -0.3};
+    const std::string message = errorOf([&] { ScenarioFile::fromJson(doc.dump()); });
+    for (const char *part : {"robot 'panda0'", "link 'panda_link0'", "obstacle 'bar0'"})
+        EXPECT_NE(message.find(part), std::string::npos) << message;
+    // The same through the API.
+    const auto environment = scenarios::createPandaCage(2, 0).getSpaceInformation()->getRobot(0)->getEnvironment();
+    EXPECT_NE(errorOf(
+                  [&]
+                  {
+                      UrdfArm("arm", environment, scenarios::pandaUrdf(), "panda_link0", "panda_link8",
+                              UrdfArm::pose(-0.5, -1.0, -0.3, 0., 0., 0.));
+                  })
+                  .find("link 'panda_link0', fixed to the base, collides with obstacle 'bar0'"),
+              std::string::npos);
 }
 
 TEST(PandaCage, ArcSolvesPandaCage4Task0Validated)

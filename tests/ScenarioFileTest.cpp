@@ -116,8 +116,6 @@ TEST(ScenarioFile, BuiltInScenariosRoundTrip)
     for (const auto &name : scenarios::scenarioNames())
         for (std::size_t robots : {2u, 4u, 8u, 16u})
         {
-            if (name == "panda_cage" && robots > 4)
-                continue;  // Panda Cage exists for 2, 4 and 8 robots; 2 and 4 cover its format
             SCOPED_TRACE(name + " " + std::to_string(robots));
             const auto problem = scenarios::createScenario(name, robots, 64.);
             ScenarioFile::write(path, problem);

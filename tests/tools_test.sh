@@ -64,14 +64,15 @@ expect 2 "unknown planner 'astar' (valid: arc, ep-rrt-c, or-ep-rrt-c, or-pp-st-r
     "$bin/ompl_parc_demo" --planner astar
 expect 2 "not both" "$bin/ompl_parc_demo" --scenario mobile_circle --scenario-file "$scenarios/doorway_swap.json"
 expect 2 "cannot open" "$bin/ompl_parc_demo" --scenario-file "$tmp/missing_scenario.json"
-edit() {  # edit OUT PYTHON: write doorway_swap.json changed by the Python statement (on doc) to OUT
-    python3 - "$scenarios/doorway_swap.json" "$1" "$2" <<'PY'
+edit_scenario() {  # edit_scenario IN OUT PYTHON: write scenario file IN changed by the Python statement (on doc) to OUT
+    python3 - "$1" "$2" "$3" <<'PY'
 import json, sys
 doc = json.load(open(sys.argv[1]))
 exec(sys.argv[3])
 json.dump(doc, open(sys.argv[2], "w"))
 PY
 }
+edit() { edit_scenario "$scenarios/doorway_swap.json" "$1" "$2"; }
 edit "$tmp/radius.json" 'doc["robots"][2]["radius"] = 0'
 expect 2 "robots\[2\].radius must be a positive number" "$bin/ompl_parc_demo" --scenario-file "$tmp/radius.json"
 edit "$tmp/dup.json" 'doc["robots"][1]["name"] = "west_a"'
@@ -84,6 +85,38 @@ head -c 200 "$scenarios/doorway_swap.json" >"$tmp/cut.json"
 expect 2 "not valid JSON at line" "$bin/ompl_parc_demo" --scenario-file "$tmp/cut.json"
 # Bad input is reported on exactly one line.
 expect 0 "^1$" bash -c "'$bin/ompl_parc_demo' --scenario-file '$tmp/dup.json' 2>&1 | wc -l"
+
+# Panda Cage: stored tasks by --task, the same problem as their scenario files; the generator; bad input.
+expect 0 "validated  yes" "$bin/ompl_parc_demo" --scenario panda_cage --robots 2 --task 1 --param profile=panda \
+    --out "$tmp/panda.json" --geometry "$tmp/panda_geometry.json"
+expect 0 "^valid: 2 robots" "$bin/ompl_parc_validate" --scenario-file "$scenarios/panda_cage/panda_cage_2_1.json" \
+    "$tmp/panda.json"
+expect 2 "task must be below 5, got 5" "$bin/ompl_parc_demo" --scenario panda_cage --robots 2 --task 5
+expect 2 "scenario 'mobile_cross' has only task 0" "$bin/ompl_parc_demo" --task 1
+expect 2 "not both" "$bin/ompl_parc_demo" --task 1 --scenario-file "$scenarios/doorway_swap.json"
+mkdir -p "$tmp/cage"
+expect 0 "panda_cage_4_0.json  generated in .* conflicting pairs [1-9]" \
+    "$bin/ompl_parc_generate_panda_cage" --out-dir "$tmp/cage" --robots 4 --task 0
+expect 0 "validated  yes" "$bin/ompl_parc_demo" --scenario-file "$tmp/cage/panda_cage_4_0.json" --param profile=panda
+expect 2 "no --out-dir" "$bin/ompl_parc_generate_panda_cage"
+expect 2 "needs 2, 4, 8 or 16 robots, got 5" "$bin/ompl_parc_generate_panda_cage" --out-dir "$tmp" --robots 5
+panda_edit() { edit_scenario "$scenarios/panda_cage/panda_cage_2_0.json" "$1" "$2"; }
+panda_edit "$tmp/in_bar.json" 'doc["robots"][0]["base_pose"]["position"] = [-0.5, -1.0, -0.3]'
+expect 2 "robot 'panda0': link 'panda_link0', fixed to the base, collides with obstacle 'bar0'" \
+    "$bin/ompl_parc_demo" --scenario-file "$tmp/in_bar.json"
+panda_edit "$tmp/no_limit.json" "import re; r = doc['robots'][1]; r.pop('builtin_urdf'); \
+r['urdf'] = re.sub(r'<limit[^>]*/>', '', open('$scenarios/../resources/panda.urdf').read(), count=1)"
+expect 2 "malformed URDF: Joint \[panda_joint1\] is of type REVOLUTE but it does not specify limits" \
+    "$bin/ompl_parc_demo" --scenario-file "$tmp/no_limit.json"
+expect 0 "^1$" bash -c "'$bin/ompl_parc_demo' --scenario-file '$tmp/no_limit.json' 2>&1 | wc -l"
+
+# The Panda Cage picture (if Debian's matplotlib is there): geometry file -> PNG.
+if /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
+    expect 0 "PNG" bash -c "/usr/bin/python3 '$(dirname "$0")/../scripts/draw_panda_cage.py' \
+        '$tmp/panda_geometry.json' '$tmp/panda.png' && head -c 4 '$tmp/panda.png'"
+else
+    echo "skip: no python3-matplotlib, the Panda Cage picture is not drawn"
+fi
 
 if [ "$failures" -ne 0 ]; then
     echo "$failures tool check(s) failed"

@@ -1,10 +1,13 @@
 #include "ompl_parc/scenarios/PandaCage.h"
 
 #include "ompl_parc/CapsuleCollision.h"
+#include "ompl_parc/ScenarioFile.h"
 #include "ompl_parc/UrdfArm.h"
+#include "ompl_parc/scenarios/ConflictingPairs.h"
 
 #include <ompl/util/Exception.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -12,112 +15,183 @@ namespace ompl_parc::scenarios
 {
     namespace
     {
-        // Layout: a cage of 4 vertical bars (radius 1 cm) at the corners of a square around the z axis
-        // (0.5 m wide for up to 4 robots, wider for more hands), from the floor to the ceiling 1.6 m up. Half the
-        // Pandas stand on the floor, half hang from the ceiling, evenly spaced on circles around the cage (ceiling ones
-        // offset by half a step), all facing its axis. End effectors go to points inside the cage: floor arms' in its
-        // lower half, ceiling arms' in its upper half. There is no floor or ceiling slab: the bases rest on them.
-        constexpr double BAR_RADIUS = 0.01, CEILING = 1.6;
-        constexpr unsigned int ATTEMPTS_PER_ROBOT = 20;
+        // The authors' layout (parasollab/comotion, apps/panda_cage_builtin_tasks.hpp): the cage is the frame of
+        // a box 1 m (x) by 2 m (y) by 1 m (z) centred at the origin, 12 bars of radius 5 cm on its edges, open
+        // faces. Pandas stand 0.25 m outside its x faces (x = -0.75, and x = +0.75 for 16 robots) facing it,
+        // on the floor 0.5 m below it (z = -1) or upside down from the ceiling 0.5 m above it (z = +1), in rows
+        // along y. An end effector target is drawn uniformly from the part of the cage within 0.855 m of its
+        // base (the Panda's reach); each target gets 20 IK restarts.
+        constexpr double CAGE_HALF_X = 0.5, CAGE_HALF_Y = 1.0, CAGE_HALF_Z = 0.5, BAR_RADIUS = 0.05;
+        constexpr double BASE_X = 0.75, BASE_Z = 1.0, REACH = 0.855;
+        constexpr unsigned int IK_RESTARTS = 20;
 
-        /** Half the cage's width; targets keep 0.1 from its bars, bases stand 0.3 outside them. */
-        double cageHalf(std::size_t robots)
+        void checkTask(std::size_t robots, std::size_t task)
         {
-            return robots <= 4 ? 0.25 : robots == 8 ? 0.35 : 0.45;
+            const auto &sizes = pandaCageTeamSizes();
+            if (std::find(sizes.begin(), sizes.end(), robots) == sizes.end())
+                throw ompl::Exception("PandaCage", "needs 2, 4, 8 or 16 robots, got " + std::to_string(robots));
+            if (task >= PANDA_CAGE_TASKS)
+                throw ompl::Exception("PandaCage", "task must be below " + std::to_string(PANDA_CAGE_TASKS) + ", got " +
+                                                       std::to_string(task));
         }
 
-        /** Robot \e robot's configuration for a random target inside the cage reached by position IK,
-            valid alone and against the configurations in \e placed; empty if none was found. */
-        std::vector<double> placeEndEffector(const std::vector<std::shared_ptr<UrdfArm>> &team, std::size_t robot,
-                                             const std::vector<std::vector<double>> &placed, std::mt19937 &rng)
+        /** The 12 bars on the edges of the cage box, in the authors' order: 4 posts along z, 4 bars along x,
+            4 along y. */
+        EnvironmentPtr createCage()
         {
-            const UrdfArm &arm = *team[robot];
-            const bool floor = robot % 2 == 0;
-            const double half = cageHalf(team.size()) - 0.1;
-            std::uniform_real_distribution<double> xy(-half, half);
-            std::uniform_real_distribution<double> z(floor ? 0.35 : 0.9, floor ? 0.7 : 1.25);
-            CollisionBody body, other;
-            std::vector<double> q;
-            for (unsigned int attempt = 0; attempt < ATTEMPTS_PER_ROBOT; ++attempt)
-            {
-                if (!arm.solvePositionIk(Eigen::Vector3d(xy(rng), xy(rng), z(rng)), rng, q, 10))
-                    continue;
-                arm.computeBody(q.data(), body);
-                bool free = true;
-                for (std::size_t j = 0; j < placed.size() && free; ++j)
+            const Eigen::Vector3d half(CAGE_HALF_X, CAGE_HALF_Y, CAGE_HALF_Z);
+            auto environment = std::make_shared<Environment>();
+            for (int axis : {2, 0, 1})
+                for (int corner = 0; corner < 4; ++corner)
                 {
-                    team[j]->computeBody(placed[j].data(), other);
-                    free = !bodiesCollide(body, other);
+                    // The bar along `axis` through corner (+-, +-) of the other two axes u and v.
+                    const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2;
+                    Eigen::Vector3d center = Eigen::Vector3d::Zero();
+                    center[u] = corner % 2 == 0 ? -half[u] : half[u];
+                    center[v] = corner / 2 == 0 ? -half[v] : half[v];
+                    Obstacle bar;
+                    bar.name = "bar" + std::to_string(environment->getObstacles().size());
+                    bar.shape = Obstacle::Shape::CYLINDER;
+                    bar.size = Eigen::Vector3d(BAR_RADIUS, 0., 2. * half[axis]);
+                    bar.pose =
+                        Eigen::Translation3d(center) *
+                        Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), Eigen::Vector3d::Unit(axis));
+                    environment->addObstacle(bar);
                 }
-                if (free)
-                    return q;
-            }
-            return {};
+            return environment;
         }
 
-        /** Valid, mutually collision-free configurations of the whole team (a start or a goal set); placed
-            greedily robot by robot, starting over when a robot finds no room. */
-        std::vector<std::vector<double>> placeTeam(const std::vector<std::shared_ptr<UrdfArm>> &team, std::mt19937 &rng)
+        /** The base poses of a team of \e robots: rows along y on the -x side (and the +x side for 16), the
+            floor level first, then the ceiling (none for 2 robots). The Panda reaches along its base's x axis,
+            so +x side arms are turned by pi about z; ceiling arms hang upside down (turned by pi about x). */
+        std::vector<Eigen::Isometry3d> basePoses(std::size_t robots)
         {
-            constexpr int TEAM_ATTEMPTS = 50;
-            for (int attempt = 0; attempt < TEAM_ATTEMPTS; ++attempt)
+            const std::vector<double> rows = robots == 2   ? std::vector<double>{-0.5, 0.5}
+                                             : robots == 4 ? std::vector<double>{-0.25, 0.25}
+                                                           : std::vector<double>{-0.75, -0.25, 0.25, 0.75};
+            std::vector<Eigen::Isometry3d> poses;
+            for (double side : robots == 16 ? std::vector<double>{-1., 1.} : std::vector<double>{-1.})
+                for (double level : robots == 2 ? std::vector<double>{-1.} : std::vector<double>{-1., 1.})
+                    for (double y : rows)
+                        poses.push_back(UrdfArm::pose(side * BASE_X, y, level * BASE_Z, level > 0. ? M_PI : 0., 0.,
+                                                      side > 0. ? M_PI : 0.));
+            return poses;
+        }
+
+        /** A point drawn uniformly from the part of the cage within REACH of \e base (rejection sampling in
+            the box around that part). */
+        Eigen::Vector3d drawTarget(const Eigen::Vector3d &base, std::mt19937 &rng)
+        {
+            const Eigen::AlignedBox3d reach(base - Eigen::Vector3d::Constant(REACH),
+                                            base + Eigen::Vector3d::Constant(REACH));
+            const Eigen::AlignedBox3d box = pandaCageInterior().intersection(reach);
+            if (box.isEmpty())
+                throw ompl::Exception("PandaCage", "a base is out of reach of the cage");
+            std::uniform_real_distribution<double> x(box.min().x(), box.max().x()), y(box.min().y(), box.max().y()),
+                z(box.min().z(), box.max().z());
+            for (;;)
+            {
+                const Eigen::Vector3d p(x(rng), y(rng), z(rng));
+                if ((p - base).norm() <= REACH)
+                    return p;
+            }
+        }
+
+        /** Valid, mutually collision-free configurations of the whole team with every end effector in the
+            cage (a start or a goal set): robots placed in order, each trying up to \e attempts targets; the
+            team starts over (up to \e attempts times) when one finds no room. */
+        std::vector<std::vector<double>> placeTeam(const std::vector<std::shared_ptr<UrdfArm>> &team,
+                                                   unsigned int attempts, std::mt19937 &rng)
+        {
+            CollisionBody body, other;
+            for (unsigned int restart = 0; restart < attempts; ++restart)
             {
                 std::vector<std::vector<double>> placed;
-                while (placed.size() < team.size())
+                for (std::size_t r = 0; r < team.size() && placed.size() == r; ++r)
                 {
-                    auto q = placeEndEffector(team, placed.size(), placed, rng);
-                    if (q.empty())
-                        break;
-                    placed.push_back(std::move(q));
+                    std::vector<double> q;
+                    for (unsigned int attempt = 0; attempt < attempts; ++attempt)
+                    {
+                        const Eigen::Vector3d target = drawTarget(team[r]->getBasePose().translation(), rng);
+                        if (!team[r]->solvePositionIk(target, rng, q, IK_RESTARTS))
+                            continue;
+                        team[r]->computeBody(q.data(), body);
+                        bool free = true;
+                        for (std::size_t j = 0; j < placed.size() && free; ++j)
+                        {
+                            team[j]->computeBody(placed[j].data(), other);
+                            free = !bodiesCollide(body, other);
+                        }
+                        if (free)
+                        {
+                            placed.push_back(q);
+                            break;
+                        }
+                    }
                 }
                 if (placed.size() == team.size())
                     return placed;
             }
-            throw ompl::Exception(
-                "PandaCage", "could not place all " + std::to_string(team.size()) + " end effectors inside the cage");
+            throw ompl::Exception("PandaCage",
+                                  "could not place all " + std::to_string(team.size()) + " end effectors in the cage");
         }
     }  // namespace
 
+    const std::vector<std::size_t> &pandaCageTeamSizes()
+    {
+        static const std::vector<std::size_t> sizes = {2, 4, 8, 16};
+        return sizes;
+    }
+
+    Eigen::AlignedBox3d pandaCageInterior()
+    {
+        const Eigen::Vector3d half(CAGE_HALF_X, CAGE_HALF_Y, CAGE_HALF_Z);
+        return {-half, half};
+    }
+
     MultiRobotProblem createPandaCage(std::size_t robots, std::size_t task, double resolution)
     {
-        if (robots != 2 && robots != 4 && robots != 8)  // 16 do not fit with this task generator yet
-            throw ompl::Exception("PandaCage", "needs 2, 4 or 8 robots, got " + std::to_string(robots));
-        if (task >= PANDA_CAGE_TASKS)
-            throw ompl::Exception("PandaCage", "task must be below " + std::to_string(PANDA_CAGE_TASKS) + ", got " +
-                                                   std::to_string(task));
-        auto environment = std::make_shared<Environment>();
-        for (int k = 0; k < 4; ++k)
-        {
-            Obstacle bar;
-            bar.name = "bar" + std::to_string(k);
-            bar.shape = Obstacle::Shape::CYLINDER;
-            bar.size = Eigen::Vector3d(BAR_RADIUS, 0., CEILING);
-            const double c = cageHalf(robots);
-            bar.pose.translation() = Eigen::Vector3d(k % 2 == 0 ? -c : c, k / 2 == 0 ? -c : c, 0.5 * CEILING);
-            environment->addObstacle(bar);
-        }
-
-        // Robots alternate floor (even index) and ceiling (odd), so every team has both.
-        const std::size_t perLevel = robots / 2;
-        std::vector<std::shared_ptr<UrdfArm>> team;
+        checkTask(robots, task);
+        const MultiRobotProblem stored = ScenarioFile::fromJson(pandaCageTaskJson(robots, task));
+        const auto &si = *stored.getSpaceInformation();
+        if (si.getResolution() == resolution)
+            return stored;
+        std::vector<RobotPtr> team;
+        std::vector<std::vector<double>> starts, goals;
         for (std::size_t i = 0; i < robots; ++i)
         {
-            const bool floor = i % 2 == 0;
-            const double angle =
-                2. * M_PI * (static_cast<double>(i / 2) + (floor ? 0. : 0.5)) / static_cast<double>(perLevel);
-            const double r = cageHalf(robots) + 0.3, x = r * std::cos(angle), y = r * std::sin(angle);
-            // Facing the axis (the arm reaches along its base x axis); ceiling arms upside down (roll pi).
-            const auto base = floor ? UrdfArm::pose(x, y, 0., 0., 0., angle + M_PI)
-                                    : UrdfArm::pose(x, y, CEILING, M_PI, 0., angle + M_PI);
-            team.push_back(std::make_shared<UrdfArm>("panda" + std::to_string(i), environment, pandaUrdf(),
-                                                     "panda_link0", "panda_link8", base));
+            team.push_back(si.getRobot(i));
+            starts.push_back(stored.getStart(i));
+            goals.push_back(stored.getGoal(i));
         }
+        return MultiRobotProblem(std::make_shared<MultiRobotSpaceInformation>(team, resolution), starts, goals,
+                                 stored.getName());
+    }
 
+    MultiRobotProblem generatePandaCageTask(std::size_t robots, std::size_t task)
+    {
+        checkTask(robots, task);
+        const auto environment = createCage();
+        std::vector<std::shared_ptr<UrdfArm>> team;
+        for (const auto &base : basePoses(robots))
+            team.push_back(std::make_shared<UrdfArm>("panda" + std::to_string(team.size()), environment, pandaUrdf(),
+                                                     "panda_link0", "panda_link8", base));
+        // The authors' effort: 100 targets per robot and 100 team restarts for 2 robots, 200 for 4, ... 400 for 16.
+        const auto attempts = static_cast<unsigned int>(100 * std::log2(static_cast<double>(robots)));
         std::mt19937 rng(static_cast<unsigned int>(1000 * robots + task));
-        const auto starts = placeTeam(team, rng);
-        const auto goals = placeTeam(team, rng);
-        return MultiRobotProblem(
-            std::make_shared<MultiRobotSpaceInformation>(std::vector<RobotPtr>(team.begin(), team.end()), resolution),
-            starts, goals, "panda_cage");
+        // A task the robots can solve without coordinating (no pair's individual paths collide) is drawn again.
+        constexpr unsigned int CANDIDATES = 100;
+        const auto si = std::make_shared<MultiRobotSpaceInformation>(std::vector<RobotPtr>(team.begin(), team.end()));
+        for (unsigned int candidate = 0; candidate < CANDIDATES; ++candidate)
+        {
+            auto starts = placeTeam(team, attempts, rng);
+            auto goals = placeTeam(team, attempts, rng);
+            MultiRobotProblem problem(si, std::move(starts), std::move(goals),
+                                      "panda_cage_" + std::to_string(robots) + "_" + std::to_string(task));
+            if (countConflictingPairs(problem) > 0)
+                return problem;
+        }
+        throw ompl::Exception(
+            "PandaCage", "no task among " + std::to_string(CANDIDATES) + " candidates needs the robots to coordinate");
     }
 }  // namespace ompl_parc::scenarios

@@ -124,20 +124,34 @@ namespace ompl_parc::scenarios
 
     namespace
     {
-        using Builder = std::function<MultiRobotProblem(std::size_t, double)>;
+        /** Builds a scenario from (robots, resolution, task). */
+        using Builder = std::function<MultiRobotProblem(std::size_t, double, std::size_t)>;
+
+        /** A scenario with one task: \e build, rejecting any other task. */
+        Builder singleTask(const std::string &name, MultiRobotProblem (*build)(std::size_t, double))
+        {
+            return [name, build](std::size_t robots, double resolution, std::size_t task)
+            {
+                if (task != 0)
+                    throw ompl::Exception("Scenarios",
+                                          "scenario '" + name + "' has only task 0, got task " + std::to_string(task));
+                return build(robots, resolution);
+            };
+        }
+
         const std::map<std::string, Builder> &builders()
         {
             static const std::map<std::string, Builder> table = {
-                {"mobile_circle", createMobileCircle},
-                {"mobile_cross", createMobileCross},
-                {"planar_cross", createPlanarCross},
-                {"panda_cage",
-                 [](std::size_t robots, double resolution) { return createPandaCage(robots, 0, resolution); }}};
+                {"mobile_circle", singleTask("mobile_circle", createMobileCircle)},
+                {"mobile_cross", singleTask("mobile_cross", createMobileCross)},
+                {"planar_cross", singleTask("planar_cross", createPlanarCross)},
+                {"panda_cage", [](std::size_t robots, double resolution, std::size_t task)
+                 { return createPandaCage(robots, task, resolution); }}};
             return table;
         }
     }  // namespace
 
-    MultiRobotProblem createScenario(const std::string &name, std::size_t robots, double resolution)
+    MultiRobotProblem createScenario(const std::string &name, std::size_t robots, double resolution, std::size_t task)
     {
         const auto it = builders().find(name);
         if (it == builders().end())
@@ -147,7 +161,7 @@ namespace ompl_parc::scenarios
                 valid += (valid.empty() ? "" : ", ") + n;
             throw ompl::Exception("Scenarios", "unknown scenario '" + name + "' (valid: " + valid + ")");
         }
-        return it->second(robots, resolution);
+        return it->second(robots, resolution, task);
     }
 
     std::vector<std::string> scenarioNames()

@@ -27,9 +27,11 @@ namespace ompl_parc
         MultiRobotProblem createPlanarCross(std::size_t robots, double resolution = 128.);
 
         /** \brief Build a scenario by name ("mobile_cross", "mobile_circle", "planar_cross", "panda_cage");
-            throws ompl::Exception listing the valid names for an unknown one. "panda_cage" is task 0 of
-            Panda Cage; the other tasks are built with createPandaCage(robots, task) (PandaCage.h). */
-        MultiRobotProblem createScenario(const std::string &name, std::size_t robots, double resolution = 128.);
+            throws ompl::Exception listing the valid names for an unknown one. \e task picks one of the
+            scenario's tasks: Panda Cage has PANDA_CAGE_TASKS (createPandaCage(robots, task), PandaCage.h), the
+            others one (task 0); throws ompl::Exception for a task the scenario does not have. */
+        MultiRobotProblem createScenario(const std::string &name, std::size_t robots, double resolution = 128.,
+                                         std::size_t task = 0);
 
         /** \brief The names createScenario() accepts. */
         std::vector<std::string> scenarioNames();
