@@ -39,8 +39,9 @@ namespace ompl_parc
             layout (floor and ceiling Pandas beside a 1 x 2 x 1 m cage of 12 bars) and, from a seed fixed by
             \e robots and \e task, end effector targets drawn inside the cage within reach of each base and
             reached by position-only IK; every start and goal is valid alone and against the robots placed
-            before it (greedy, starting the team over when a robot finds no room); a task in which no two robots
-            must coordinate (countConflictingPairs() is 0 for ARC seed 1) is drawn again. The random draws use the
+            before it (greedy, starting the team over when a robot finds no room); a task the robots might solve
+            without coordinating (countConflictingPairs() is 0 for one of ARC seeds 1, 2, 3) is drawn again. The
+            random draws use the
             standard library's distributions, whose output differs between implementations: that is why the
             tasks are stored rather than regenerated. Throws ompl::Exception if no team fits or no task needs
            coordination. */
