@@ -103,8 +103,8 @@ def main():
     for k, end in enumerate(("start", "goal")):
         draw_view(fig.add_subplot(1, 2, k + 1, projection="3d"), doc, end, colors, lo, hi, points_per_metre)
     fig.suptitle(args.title or doc.get("name", ""))
-    fig.tight_layout()
-    fig.savefig(args.picture, dpi=110)
+    fig.tight_layout(rect=(0, 0, 1, 0.95))  # room for the title
+    fig.savefig(args.picture, dpi=90)
 
 
 if __name__ == "__main__":
