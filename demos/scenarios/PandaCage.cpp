@@ -15,7 +15,8 @@ namespace ompl_parc::scenarios
 {
     namespace
     {
-        // The authors' layout (parasollab/comotion, apps/panda_cage_builtin_tasks.hpp): the cage is the frame of
+        // The authors' layout (parasollab/comotion: apps/panda_cage.cpp and the task file it compiles in,
+        // apps/panda_cage_builtin_tasks.hpp, as in the fork aezkcl/comotion): the cage is the frame of
         // a box 1 m (x) by 2 m (y) by 1 m (z) centred at the origin, 12 bars of radius 5 cm on its edges, open
         // faces. Pandas stand 0.25 m outside its x faces (x = -0.75, and x = +0.75 for 16 robots) facing it,
         // on the floor 0.5 m below it (z = -1) or upside down from the ceiling 0.5 m above it (z = +1), in rows
@@ -39,7 +40,7 @@ namespace ompl_parc::scenarios
             4 along y. */
         EnvironmentPtr createCage()
         {
-            const Eigen::Vector3d half(CAGE_HALF_X, CAGE_HALF_Y, CAGE_HALF_Z);
+            const Eigen::Vector3d half = pandaCageInterior().max();
             auto environment = std::make_shared<Environment>();
             for (int axis : {2, 0, 1})
                 for (int corner = 0; corner < 4; ++corner)
