@@ -1,7 +1,7 @@
 /* ompl_parc_generate_panda_cage: generate the Panda Cage tasks (scenarios::generatePandaCageTask) and store them
    as scenario files OUT_DIR/panda_cage_<robots>_<task>.json, the files the library compiles in. For each task it
    reports how many robot pairs must coordinate: the pairs whose individual paths (ARC's first stage, as ARC plans
-   them with --seed) collide, found by scanning every pair to its first conflict.
+   them with its seed parameter set to --seed) collide, found by scanning every pair to its first conflict.
    Exit 0: all written; 2: bad input or a task that could not be generated. */
 #include "ToolSupport.h"
 
@@ -30,8 +30,8 @@ int main(int argc, char **argv)
                 "team size to generate (repeatable; default 2, 4, 8 and 16)")(
                 "task", po::value<std::vector<std::size_t>>()->composing(),
                 "task to generate (repeatable; default all)")("seed", po::value<unsigned int>()->default_value(1),
-                                                              "ARC seed of the conflict report")("help,h",
-                                                                                                 "show this help");
+                                                              "ARC seed parameter of the conflict report")(
+                "help,h", "show this help");
             const auto vm = tools::parse(argc, argv, options);
             if (vm.count("help"))
             {
