@@ -52,42 +52,59 @@ bool ompl_parc::capsulesCollide(const CollisionBody &a, std::size_t i, const Col
 
 bool ompl_parc::bodiesCollide(const CollisionBody &a, const CollisionBody &b)
 {
-    const double cx = a.centerX_ - b.centerX_, cy = a.centerY_ - b.centerY_, cz = a.centerZ_ - b.centerZ_;
-    const double rb = a.boundRadius_ + b.boundRadius_;
-    if (cx * cx + cy * cy + cz * cz >= rb * rb)
-        return false;
-
-    // Per capsule of a: a pure map over chunks of b's capsules into a small buffer of clearances (a
-    // loop the compiler vectorises: no early exit, no reduction), then a short scalar scan of it.
-    constexpr std::size_t CHUNK = 16;
-    double clearance[CHUNK];
-    const std::size_t n = b.size();
-    const double *bax = b.ax_.data(), *bay = b.ay_.data(), *baz = b.az_.data();
-    const double *bbx = b.bx_.data(), *bby = b.by_.data(), *bbz = b.bz_.data(), *br = b.radius_.data();
-    const bool spheres = a.spheresOnly_ && b.spheresOnly_;
-    for (std::size_t i = 0; i < a.size(); ++i)
+    const auto apart = [](double x1, double y1, double z1, double r1, double x2, double y2, double z2, double r2)
     {
-        const double p1x = a.ax_[i], p1y = a.ay_[i], p1z = a.az_[i];
-        const double q1x = a.bx_[i], q1y = a.by_[i], q1z = a.bz_[i], ri = a.radius_[i];
-        for (std::size_t base = 0; base < n; base += CHUNK)
+        const double dx = x1 - x2, dy = y1 - y2, dz = z1 - z2, rr = r1 + r2;
+        return dx * dx + dy * dy + dz * dz >= rr * rr;
+    };
+    if (apart(a.centerX_, a.centerY_, a.centerZ_, a.boundRadius_, b.centerX_, b.centerY_, b.centerZ_, b.boundRadius_))
+        return false;
+    if (a.size() == 1 && b.size() == 1 && a.spheresOnly_ && b.spheresOnly_)
+        return true;  // two spheres are their own bounds (discs: the common case stops here)
+
+    // b's capsules in chunks: those whose spheres reach a's bound are gathered into small local arrays
+    // (a vectorised map, then a compaction); then per capsule of a that reaches b's bound, one vectorised
+    // pass of sphere-sphere clearances over the gathered ones, and the exact segment distance only where
+    // the capsule spheres overlap.
+    constexpr std::size_t CHUNK = 16;
+    double clearance[CHUNK], gx[CHUNK], gy[CHUNK], gz[CHUNK], gr[CHUNK];
+    std::size_t index[CHUNK];
+    const std::size_t na = a.size(), nb = b.size();
+    for (std::size_t base = 0; base < nb; base += CHUNK)
+    {
+        const std::size_t m = std::min(CHUNK, nb - base);
+        const double *sx = b.sphereX_.data() + base, *sy = b.sphereY_.data() + base;
+        const double *sz = b.sphereZ_.data() + base, *sr = b.sphereRadius_.data() + base;
+        for (std::size_t k = 0; k < m; ++k)
         {
-            const std::size_t m = std::min(CHUNK, n - base);
-            for (std::size_t j = 0; j < m; ++j)
+            const double dx = sx[k] - a.centerX_, dy = sy[k] - a.centerY_, dz = sz[k] - a.centerZ_;
+            const double rr = sr[k] + a.boundRadius_;
+            clearance[k] = dx * dx + dy * dy + dz * dz - rr * rr;
+        }
+        std::size_t near = 0;
+        for (std::size_t k = 0; k < m; ++k)
+            if (clearance[k] < 0.)
             {
-                const std::size_t k = base + j;
-                const double rr = ri + br[k];
-                if (spheres)
-                {
-                    const double dx = p1x - bax[k], dy = p1y - bay[k], dz = p1z - baz[k];
-                    clearance[j] = dx * dx + dy * dy + dz * dz - rr * rr;
-                }
-                else
-                    clearance[j] = ::segmentDistanceSquared(p1x, p1y, p1z, q1x, q1y, q1z, bax[k], bay[k], baz[k],
-                                                            bbx[k], bby[k], bbz[k]) -
-                                   rr * rr;
+                gx[near] = sx[k];
+                gy[near] = sy[k];
+                gz[near] = sz[k];
+                gr[near] = sr[k];
+                index[near++] = base + k;
             }
-            for (std::size_t j = 0; j < m; ++j)
-                if (clearance[j] < 0.)
+        if (near == 0)
+            continue;
+        for (std::size_t i = 0; i < na; ++i)
+        {
+            const double x = a.sphereX_[i], y = a.sphereY_[i], z = a.sphereZ_[i], r = a.sphereRadius_[i];
+            if (apart(x, y, z, r, b.centerX_, b.centerY_, b.centerZ_, b.boundRadius_))
+                continue;
+            for (std::size_t k = 0; k < near; ++k)
+            {
+                const double dx = gx[k] - x, dy = gy[k] - y, dz = gz[k] - z, rr = gr[k] + r;
+                clearance[k] = dx * dx + dy * dy + dz * dz - rr * rr;
+            }
+            for (std::size_t k = 0; k < near; ++k)
+                if (clearance[k] < 0. && capsulesCollide(a, i, b, index[k]))
                     return true;
         }
     }
