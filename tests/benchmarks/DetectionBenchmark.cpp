@@ -5,8 +5,9 @@
    frontiers and swept bounds, the worker pool already started, as inside P-ARC) for all ten plan sets, and
    reports the mean per call: wall time (manual time), the process CPU time of all threads, and the projected
    W-core time (largest per-worker CPU per round plus the coordinator; a projection when W exceeds the cores).
-   Rows: W = 1, 2 (and 16, oversubscribed on small machines) at H = 200, and a horizon sweep at W = 2. A table
-   at the end gives W = 2 against W = 1, measured side by side in this run.
+   Rows: W = 1, 2 (and 16, oversubscribed on small machines) at H = 200, and a horizon sweep at W = 2. A call
+   with more workers returns a larger batch (up to W conflicts), so the table at the end gives, side by side in
+   this run, the wall time per call and per conflict found, against W = 1.
    Usage: ompl_parc_bench_detection [--benchmark_filter=REGEX] */
 #include "ompl_parc/BatchDetector.h"
 #include "ompl_parc/InitialPlanner.h"
@@ -69,10 +70,14 @@ namespace
         return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
     }
 
-    /** Mean wall seconds per call, per (workers, horizon), for the closing table. */
-    std::map<std::pair<unsigned int, unsigned int>, double> &meanWall()
+    /** Mean wall seconds per call and mean batch size, per (workers, horizon), for the closing table. */
+    struct Mean
     {
-        static std::map<std::pair<unsigned int, unsigned int>, double> table;
+        double wall, batch;
+    };
+    std::map<std::pair<unsigned int, unsigned int>, Mean> &means()
+    {
+        static std::map<std::pair<unsigned int, unsigned int>, Mean> table;
         return table;
     }
 
@@ -112,22 +117,26 @@ namespace
         state.counters["cpu_all_threads_ms"] = 1e3 * cpu / calls;
         state.counters["projected_ms"] = 1e3 * projected / calls;
         state.counters["batch_size"] = conflicts / calls;
-        meanWall()[{workers, horizon}] = wall / calls;
+        state.counters["wall_ms_per_conflict"] = 1e3 * wall / conflicts;
+        means()[{workers, horizon}] = {wall / calls, conflicts / calls};
     }
 
     void printTable()
     {
-        const auto &table = meanWall();
-        const auto w1 = table.find({1, 200}), w2 = table.find({2, 200});
-        if (w1 == table.end() || w2 == table.end())
+        const auto &table = means();
+        const auto one = table.find({1, 200});
+        if (one == table.end())
             return;
+        const double perConflict = one->second.wall / one->second.batch;
         std::printf(
             "\nFirst detection call, Panda Cage 8, H = 200, mean over %zu plan sets, same run:\n"
-            "| workers | mean wall (ms) | speedup vs W = 1 |\n|---|---|---|\n",
+            "| workers | wall per call (ms) | batch size | wall per conflict (ms) | per call vs W = 1 | "
+            "per conflict vs W = 1 |\n|---|---|---|---|---|---|\n",
             planSets().size());
-        for (const auto &[key, seconds] : table)
+        for (const auto &[key, m] : table)
             if (key.second == 200)
-                std::printf("| %u | %.3f | %.2fx |\n", key.first, 1e3 * seconds, w1->second / seconds);
+                std::printf("| %u | %.3f | %.2f | %.3f | %.2fx | %.2fx |\n", key.first, 1e3 * m.wall, m.batch,
+                            1e3 * m.wall / m.batch, one->second.wall / m.wall, perConflict / (m.wall / m.batch));
     }
 }  // namespace
 
