@@ -106,10 +106,23 @@ ompl_parc::tools::BenchmarkConfig ompl_parc::tools::BenchmarkConfig::parse(std::
     const pt::ptree &problem = tree.get_child("problem");
     checkKeys(problem, "problem", {"name", "scenario", "robots", "resolution", "file"});
     config.problemName_ = required(problem, "problem", "name");
-    config.scenario_ = required(problem, "problem", "scenario");
-    config.robots_ = number<std::size_t>(problem, "problem", "robots", std::nullopt, 2);
-    config.resolution_ = number<double>(problem, "problem", "resolution", 128., 1e-9);
-    config.scenarioFile_ = problem.get<std::string>("file", "");
+    if (problem.count("file") != 0)
+    {
+        // A scenario file holds the team and the resolution itself.
+        for (const char *key : {"scenario", "robots", "resolution"})
+            if (problem.count(key) != 0)
+                throw std::invalid_argument(
+                    std::string("[problem] give either file or scenario and robots, not both (") + key + " is set)");
+        const std::filesystem::path file = required(problem, "problem", "file");
+        config.scenarioFile_ =
+            (file.is_absolute() ? file : std::filesystem::path(folder) / file).lexically_normal().string();
+    }
+    else
+    {
+        config.scenario_ = required(problem, "problem", "scenario");
+        config.robots_ = number<std::size_t>(problem, "problem", "robots", std::nullopt, 2);
+        config.resolution_ = number<double>(problem, "problem", "resolution", 128., 1e-9);
+    }
 
     const pt::ptree &benchmark = tree.get_child("benchmark");
     checkKeys(benchmark, "benchmark", {"time_limit", "mem_limit", "run_count", "output", "seed", "workers"});

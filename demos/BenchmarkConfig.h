@@ -33,8 +33,9 @@ namespace ompl_parc::tools
         robots = 8
         # optional: timesteps per unit of distance (128)
         resolution = 128
-        # optional, reserved for scenario files (rejected until they exist)
-        file =
+        # or instead of scenario, robots and resolution: a scenario file (ScenarioFile.h), relative to the
+        # config file's folder
+        file = ../../scenarios/doorway_swap.json
 
         [benchmark]
         time_limit = 30

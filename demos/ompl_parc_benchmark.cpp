@@ -6,6 +6,7 @@
 #include "BenchmarkConfig.h"
 #include "ToolSupport.h"
 
+#include "ompl_parc/ScenarioFile.h"
 #include "ompl_parc/SolutionValidator.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 
@@ -84,12 +85,14 @@ int main(int argc, char **argv)
 
             // Everything that can be wrong with the input is checked before the first run.
             const auto config = tools::BenchmarkConfig::read(vm["config"].as<std::string>());
-            if (!config.getScenarioFile().empty())
-                throw std::invalid_argument(
-                    "[problem] file: scenario files are not supported yet (use scenario "
-                    "and robots)");
             const MultiRobotProblem problem =
-                scenarios::createScenario(config.getScenario(), config.getRobots(), config.getResolution());
+                config.getScenarioFile().empty()
+                    ? scenarios::createScenario(config.getScenario(), config.getRobots(), config.getResolution())
+                    : ScenarioFile::read(config.getScenarioFile());
+            std::string scenario = config.getScenario();  // the CSV's scenario column
+            if (!config.getScenarioFile().empty())
+                scenario = problem.getName().empty() ? std::filesystem::path(config.getScenarioFile()).stem().string()
+                                                     : problem.getName();
             if (const std::string reason = problem.checkEndpoints(); !reason.empty())
                 throw std::invalid_argument(reason);
             const auto &si = problem.getSpaceInformation();
@@ -133,8 +136,8 @@ int main(int argc, char **argv)
             setup.setPlanner(planners.front());  // else SimpleSetup allocates a default planner it never runs
 
             ompl::tools::Benchmark benchmark(setup, config.getProblemName());
-            benchmark.addExperimentParameter("robots", "INTEGER", std::to_string(config.getRobots()));
-            benchmark.addExperimentParameter("resolution", "REAL", std::to_string(config.getResolution()));
+            benchmark.addExperimentParameter("robots", "INTEGER", std::to_string(si->getRobotCount()));
+            benchmark.addExperimentParameter("resolution", "REAL", std::to_string(si->getResolution()));
             benchmark.addExperimentParameter("base_seed", "INTEGER", std::to_string(config.getSeed()));
             benchmark.addExperimentParameter("worker_budget", "INTEGER", std::to_string(config.getWorkers()));
             for (const auto &planner : planners)
@@ -189,9 +192,9 @@ int main(int argc, char **argv)
 
                     const auto status =
                         ob::PlannerStatus(static_cast<ob::PlannerStatus::StatusType>(std::stoi(run["status ENUM"])));
-                    csv << config.getScenario() << ',' << config.getRobots() << ',' << seedOf() << ','
-                        << planner->getName() << ',' << typeOf[planner->getName()] << ',' << workerBudget(*planner)
-                        << ',' << (success ? 1 : 0) << ',' << status.asString();
+                    csv << scenario << ',' << si->getRobotCount() << ',' << seedOf() << ',' << planner->getName() << ','
+                        << typeOf[planner->getName()] << ',' << workerBudget(*planner) << ',' << (success ? 1 : 0)
+                        << ',' << status.asString();
                     for (const auto &column : csvColumns())
                     {
                         const auto it = run.find(column.second);

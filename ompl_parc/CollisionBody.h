@@ -11,8 +11,10 @@ namespace ompl_parc
 
         A sphere is a capsule whose two end points coincide, so discs, planar-arm links and sphere
         models of 3D arms all share one representation and one robot-robot test. The data is stored
-        structure-of-arrays so that the pairwise distance loop in bodiesCollide() vectorises. 2D robots
-        use z = 0. A bounding sphere of the whole body gives a cheap early-out. */
+        structure-of-arrays so that the pairwise loops in bodiesCollide() vectorise. 2D robots use z = 0.
+        Two levels of bounding spheres give cheap early-outs: one around the whole body, and one around
+        each capsule (its axis midpoint, half its length plus its radius), so that the exact segment
+        distance is computed only for capsule pairs whose spheres overlap. */
     class CollisionBody
     {
       public:
@@ -22,6 +24,10 @@ namespace ompl_parc
         /** \brief Add the capsule from (ax, ay, az) to (bx, by, bz) with the given radius. */
         void addCapsule(double ax, double ay, double az, double bx, double by, double bz, double radius);
 
+        /** \brief Make the body \e n capsules long, for kinematics that write the arrays directly (cheaper than
+            n addCapsule() calls in the hot loop); \e spheresOnly must say whether all of them will be spheres. */
+        void resize(std::size_t n, bool spheresOnly);
+
         /** \brief Add a sphere (a capsule of zero length). */
         void addSphere(double x, double y, double z, double radius) { addCapsule(x, y, z, x, y, z, radius); }
 
@@ -29,7 +35,8 @@ namespace ompl_parc
             are unions of such boxes). */
         void expandBox(std::array<double, 3> &lo, std::array<double, 3> &hi) const;
 
-        /** \brief Recompute the bounding sphere; call after the last addCapsule(). */
+        /** \brief Recompute the bounding spheres (of the body and of each capsule); call after the last
+            addCapsule(). */
         void updateBound();
 
         std::size_t size() const { return radius_.size(); }
@@ -42,6 +49,9 @@ namespace ompl_parc
 
         /** \brief Bounding sphere of all capsules. */
         double centerX_{0.}, centerY_{0.}, centerZ_{0.}, boundRadius_{0.};
+
+        /** \brief Bounding sphere of each capsule, one array per coordinate (set by updateBound()). */
+        std::vector<double> sphereX_, sphereY_, sphereZ_, sphereRadius_;
     };
 }  // namespace ompl_parc
 

@@ -234,12 +234,24 @@ ompl_parc::UrdfArm::UrdfArm(std::string name, EnvironmentPtr environment, Chain 
                             const Eigen::Isometry3d &basePose)
     : Robot(std::move(name), std::move(environment), chain.limits),
       basePose_(basePose),
-      jointOffsets_(std::move(chain.offsets)),
-      jointAxes_(std::move(chain.axes)),
       jointNames_(std::move(chain.names)),
       tipOffset_(chain.tipOffset),
       primitives_(std::move(chain.primitives))
 {
+    // Aligned frame k = URDF frame k turned by A_k, where A_k takes z onto joint k's axis u_k. Since
+    // R(u_k, q) = A_k Rz(q) A_k^T, frame k = frame k-1 * O_k * R(u_k, q) becomes, for aligned frames,
+    // aligned k = aligned k-1 * (A_{k-1}^T O_k A_k) * Rz(q).
+    alignment_.push_back(Eigen::Matrix3d::Identity());
+    for (std::size_t k = 0; k < chain.offsets.size(); ++k)
+    {
+        const Eigen::Matrix3d &previous = alignment_.back();
+        const Eigen::Matrix3d align =
+            Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), chain.axes[k]).toRotationMatrix();
+        offsetRotations_.push_back(previous.transpose() * chain.offsets[k].linear() * align);
+        offsetTranslations_.push_back(previous.transpose() * chain.offsets[k].translation());
+        alignment_.push_back(align);
+    }
+
     using Shape = Obstacle::Shape;
     for (const Primitive &p : primitives_)
     {
@@ -257,8 +269,10 @@ ompl_parc::UrdfArm::UrdfArm(std::string name, EnvironmentPtr environment, Chain 
             half[longest] = h[longest];
             radius = std::sqrt(h.squaredNorm() - h[longest] * h[longest]);
         }
-        capsules_.push_back({p.frame, s.pose * (-half), s.pose * half, radius});
+        const Eigen::Matrix3d toAligned = alignment_[p.frame].transpose();
+        capsules_.push_back({p.frame, toAligned * (s.pose * (-half)), toAligned * (s.pose * half), radius});
     }
+    spheresOnly_ = std::all_of(capsules_.begin(), capsules_.end(), [](const LocalCapsule &c) { return c.a == c.b; });
     std::vector<double> zero(getDimension());
     for (unsigned int k = 0; k < getDimension(); ++k)
         zero[k] = std::clamp(0., getBounds().low[k], getBounds().high[k]);
@@ -315,12 +329,40 @@ void ompl_parc::UrdfArm::checkFixedLinks(const CollisionBody &body) const
     }
 }
 
+void ompl_parc::UrdfArm::computeAlignedFrames(const double *q, std::vector<Eigen::Matrix3d> &rotations,
+                                              std::vector<Eigen::Vector3d> &translations) const
+{
+    const std::size_t n = offsetRotations_.size();
+    rotations.resize(n + 1);
+    translations.resize(n + 1);
+    rotations[0] = basePose_.linear();
+    translations[0] = basePose_.translation();
+    for (std::size_t k = 0; k < n; ++k)
+    {
+        translations[k + 1].noalias() = translations[k] + rotations[k] * offsetTranslations_[k];
+        Eigen::Matrix3d turned;
+        turned.noalias() = rotations[k] * offsetRotations_[k];
+        // Right-multiplying by Rz(q) turns the first two columns only.
+        const double c = std::cos(q[k]), s = std::sin(q[k]);
+        Eigen::Matrix3d &r = rotations[k + 1];
+        r.col(0) = c * turned.col(0) + s * turned.col(1);
+        r.col(1) = c * turned.col(1) - s * turned.col(0);
+        r.col(2) = turned.col(2);
+    }
+}
+
 void ompl_parc::UrdfArm::computeFrames(const double *q, std::vector<Eigen::Isometry3d> &frames) const
 {
-    frames.resize(jointOffsets_.size() + 1);
-    frames[0] = basePose_;
-    for (std::size_t k = 0; k < jointOffsets_.size(); ++k)
-        frames[k + 1] = frames[k] * jointOffsets_[k] * Eigen::AngleAxisd(q[k], jointAxes_[k]);
+    thread_local std::vector<Eigen::Matrix3d> rotations;
+    thread_local std::vector<Eigen::Vector3d> translations;
+    computeAlignedFrames(q, rotations, translations);
+    frames.resize(rotations.size());
+    for (std::size_t k = 0; k < frames.size(); ++k)
+    {
+        frames[k].linear() = rotations[k] * alignment_[k].transpose();
+        frames[k].translation() = translations[k];
+        frames[k].makeAffine();
+    }
 }
 
 Eigen::Isometry3d ompl_parc::UrdfArm::computeTipPose(const double *q) const
@@ -332,13 +374,23 @@ Eigen::Isometry3d ompl_parc::UrdfArm::computeTipPose(const double *q) const
 
 void ompl_parc::UrdfArm::computeBody(const double *q, CollisionBody &body) const
 {
-    thread_local std::vector<Eigen::Isometry3d> frames;
-    computeFrames(q, frames);
-    body.clear();
-    for (const LocalCapsule &c : capsules_)
+    thread_local std::vector<Eigen::Matrix3d> rotations;
+    thread_local std::vector<Eigen::Vector3d> translations;
+    computeAlignedFrames(q, rotations, translations);
+    body.resize(capsules_.size(), spheresOnly_);
+    for (std::size_t i = 0; i < capsules_.size(); ++i)
     {
-        const Eigen::Vector3d a = frames[c.frame] * c.a, b = frames[c.frame] * c.b;
-        body.addCapsule(a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), c.radius);
+        const LocalCapsule &c = capsules_[i];
+        const Eigen::Matrix3d &r = rotations[c.frame];
+        const Eigen::Vector3d &t = translations[c.frame];
+        const Eigen::Vector3d a = r * c.a + t, b = r * c.b + t;
+        body.ax_[i] = a.x();
+        body.ay_[i] = a.y();
+        body.az_[i] = a.z();
+        body.bx_[i] = b.x();
+        body.by_[i] = b.y();
+        body.bz_[i] = b.z();
+        body.radius_[i] = c.radius;
     }
     body.updateBound();
 }
@@ -350,7 +402,8 @@ bool ompl_parc::UrdfArm::solvePositionIk(const Eigen::Vector3d &target, std::mt1
     constexpr double DAMPING = 0.05;
     const unsigned int n = getDimension();
     const auto &bounds = getBounds();
-    std::vector<Eigen::Isometry3d> frames;
+    std::vector<Eigen::Matrix3d> rotations;
+    std::vector<Eigen::Vector3d> translations;
     Eigen::MatrixXd jacobian(3, n);
     q.resize(n);
     for (unsigned int attempt = 0; attempt < restarts; ++attempt)
@@ -359,8 +412,9 @@ bool ompl_parc::UrdfArm::solvePositionIk(const Eigen::Vector3d &target, std::mt1
             q[k] = std::uniform_real_distribution<double>(bounds.low[k], bounds.high[k])(rng);
         for (int it = 0; it < ITERATIONS; ++it)
         {
-            computeFrames(q.data(), frames);
-            const Eigen::Vector3d tip = (frames.back() * tipOffset_).translation();
+            computeAlignedFrames(q.data(), rotations, translations);
+            const Eigen::Vector3d tip =
+                rotations.back() * (alignment_.back().transpose() * tipOffset_.translation()) + translations.back();
             const Eigen::Vector3d error = target - tip;
             if (error.norm() < tolerance)
             {
@@ -368,9 +422,9 @@ bool ompl_parc::UrdfArm::solvePositionIk(const Eigen::Vector3d &target, std::mt1
                     return true;
                 break;
             }
-            // Joint k turns chain link k about its axis through the link's origin.
+            // Joint k turns chain link k about its axis (the z axis of its aligned frame) through its origin.
             for (unsigned int k = 0; k < n; ++k)
-                jacobian.col(k) = (frames[k + 1].linear() * jointAxes_[k]).cross(tip - frames[k + 1].translation());
+                jacobian.col(k) = rotations[k + 1].col(2).cross(tip - translations[k + 1]);
             const Eigen::Matrix3d jjt =
                 jacobian * jacobian.transpose() + DAMPING * DAMPING * Eigen::Matrix3d::Identity();
             const Eigen::VectorXd step = jacobian.transpose() * jjt.ldlt().solve(error);

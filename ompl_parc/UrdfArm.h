@@ -80,7 +80,7 @@ namespace ompl_parc
         const std::vector<std::string> &getJointNames() const { return jointNames_; }
 
       private:
-        /** \brief A capsule of a primitive, in its chain link's frame. */
+        /** \brief A capsule of a primitive, in its chain link's aligned frame. */
         struct LocalCapsule
         {
             std::size_t frame;
@@ -105,6 +105,13 @@ namespace ompl_parc
 
         UrdfArm(std::string name, EnvironmentPtr environment, Chain chain, const Eigen::Isometry3d &basePose);
 
+        /** \brief Joint-aligned frames at \e q, the one forward kinematics every query uses: frame k is chain
+            link k's frame turned by alignment_[k] so that joint k turns about its z axis. A joint then costs
+            a rotation product and a 2D turn of two columns, not a general axis-angle rotation. \e rotations
+            and \e translations get getDimension() + 1 entries (frame 0: the base). */
+        void computeAlignedFrames(const double *q, std::vector<Eigen::Matrix3d> &rotations,
+                                  std::vector<Eigen::Vector3d> &translations) const;
+
         /** \brief Self-collision pairs: primitives of non-adjacent links not overlapping in \e zeroBody (the
             body at the zero configuration). */
         void computeSelfCollisionPairs(const CollisionBody &zeroBody);
@@ -116,12 +123,17 @@ namespace ompl_parc
 
         Eigen::Isometry3d basePose_;
         std::string urdfXml_, baseLink_, tipLink_;
-        std::vector<Eigen::Isometry3d> jointOffsets_;
-        std::vector<Eigen::Vector3d> jointAxes_;
+        /** \brief Per movable joint k, the offset from aligned frame k-1 to aligned frame k at q_k = 0. */
+        std::vector<Eigen::Matrix3d> offsetRotations_;
+        std::vector<Eigen::Vector3d> offsetTranslations_;
+        /** \brief Per chain link k, the rotation from its URDF frame to its aligned frame (base: identity). */
+        std::vector<Eigen::Matrix3d> alignment_;
         std::vector<std::string> jointNames_;
         Eigen::Isometry3d tipOffset_;
         std::vector<Primitive> primitives_;
+        /** \brief The primitives' capsules, in their link's aligned frame; whether all are spheres. */
         std::vector<LocalCapsule> capsules_;
+        bool spheresOnly_{false};
     };
 }  // namespace ompl_parc
 

@@ -111,3 +111,16 @@ TEST(BenchmarkConfig, PlannerParametersAreCheckedByName)
         EXPECT_NE(std::string(e.what()).find("workers"), std::string::npos) << e.what();
     }
 }
+
+TEST(BenchmarkConfig, ScenarioFilesAreTakenRelativeToTheConfigFolder)
+{
+    const std::string planner = "[planner]\narc =\n";
+    EXPECT_EQ(parse("[problem]\nname = f\nfile = ../scenarios/a.json\n" + BENCHMARK + planner).getScenarioFile(),
+              "/scenarios/a.json");
+    EXPECT_EQ(parse("[problem]\nname = f\nfile = /data/b.json\n" + BENCHMARK + planner).getScenarioFile(),
+              "/data/b.json");
+    EXPECT_TRUE(parse(PROBLEM + BENCHMARK + planner).getScenarioFile().empty());
+    EXPECT_NE(reason("[problem]\nname = f\nfile = a.json\nrobots = 4\n" + BENCHMARK + planner).find("not both"),
+              std::string::npos);
+    EXPECT_NE(reason("[problem]\nname = f\nfile =\n" + BENCHMARK + planner).find("file"), std::string::npos);
+}

@@ -118,6 +118,48 @@ TEST(CapsuleCollision, BodyTestAgreesWithPairwiseCapsuleTest)
     EXPECT_LT(collisions, 1900);
 }
 
+TEST(CapsuleCollision, BoundingSphereLevelsNeverChangeTheAnswer)
+{
+    // Bodies of 1 to 40 capsules (past the 16-capsule chunks of the gathered pass), spheres among them:
+    // the early-outs on body and capsule bounding spheres must give exactly the all-pairs answer.
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<double> u(-1., 1.), r(0.01, 0.15);
+    std::uniform_int_distribution<int> count(1, 40);
+    int collisions = 0, bodies = 0;
+    for (int k = 0; k < 3000; ++k)
+    {
+        CollisionBody a, b;
+        for (CollisionBody *body : {&a, &b})
+        {
+            const double shift = body == &b ? 1.2 : 0.;
+            for (int c = count(rng); c > 0; --c)
+            {
+                const double x = u(rng) + shift, y = u(rng), z = u(rng);
+                if (c % 4 == 0)
+                    body->addSphere(x, y, z, r(rng));
+                else
+                    body->addCapsule(x, y, z, x + 0.4 * u(rng), y + 0.4 * u(rng), z + 0.4 * u(rng), r(rng));
+            }
+            body->updateBound();
+        }
+        double pairMin = 1e300;
+        for (std::size_t i = 0; i < a.size(); ++i)
+            for (std::size_t j = 0; j < b.size(); ++j)
+                pairMin =
+                    std::min(pairMin, std::sqrt(segmentDistanceSquared(a, i, b, j)) - a.radius_[i] - b.radius_[j]);
+        if (std::abs(pairMin) < 1e-9)
+            continue;
+        ++bodies;
+        const bool ours = bodiesCollide(a, b);
+        EXPECT_EQ(ours, pairMin < 0.) << "body pair " << k << " with " << a.size() << " and " << b.size()
+                                      << " capsules";
+        EXPECT_EQ(bodiesCollide(b, a), ours) << "body pair " << k << " (swapped)";
+        collisions += ours ? 1 : 0;
+    }
+    EXPECT_GT(collisions, bodies / 10);  // both answers are well represented
+    EXPECT_LT(collisions, bodies - bodies / 10);
+}
+
 TEST(CapsuleCollision, SegmentDistanceMatchesFclDistance)
 {
     std::mt19937 rng(3);

@@ -1,7 +1,10 @@
+#include "TestProblems.h"
+
 #include "ompl_parc/ScenarioFile.h"
 #include "ompl_parc/SolutionValidator.h"
 #include "ompl_parc/UrdfArm.h"
 #include "ompl_parc/planners/ARC.h"
+#include "ompl_parc/planners/PARC.h"
 #include "ompl_parc/scenarios/ConflictingPairs.h"
 #include "ompl_parc/scenarios/PandaCage.h"
 #include "ompl_parc/scenarios/Scenarios.h"
@@ -117,16 +120,40 @@ TEST(PandaCage, BaseInABarIsNamedInTheError)
               std::string::npos);
 }
 
-TEST(PandaCage, ArcSolvesPandaCage4Task0Validated)
+class PandaCage4 : public testing::TestWithParam<std::tuple<std::size_t, unsigned int>>
 {
-    const auto problem = scenarios::createPandaCage(4, 0);
-    ARC arc(problem.getSpaceInformation());
-    arc.setProfile("panda");
-    arc.setSeed(1);
-    arc.setProblemDefinition(problem.createProblemDefinition());
-    arc.setup();
-    ASSERT_EQ(arc.solve(ob::timedPlannerTerminationCondition(60.)), ob::PlannerStatus::EXACT_SOLUTION)
-        << arc.getStatusMessage();
-    const auto report = SolutionValidator(problem).validate(arc.getPlan());
+};
+
+/* ARC (workers 0) and P-ARC with 2 workers solve every Panda Cage 4 task well within the paper's 100 s limit
+   (typically in under a second), and the independent validator agrees. */
+TEST_P(PandaCage4, SolvedAndTheValidatorAgrees)
+{
+    const auto [task, workers] = GetParam();
+    const auto problem = scenarios::createPandaCage(4, task);
+    std::unique_ptr<ArcPlannerBase> planner;
+    if (workers == 0)
+        planner = std::make_unique<ARC>(problem.getSpaceInformation());
+    else
+    {
+        auto parc = std::make_unique<PARC>(problem.getSpaceInformation());
+        parc->setWorkers(workers);
+        planner = std::move(parc);
+    }
+    planner->setProfile("panda");
+    planner->setSeed(1);
+    ASSERT_EQ(test::solveWith(*planner, problem, 100.), ob::PlannerStatus::EXACT_SOLUTION)
+        << planner->getStatusMessage();
+    const auto report = SolutionValidator(problem).validate(planner->getPlan());
     EXPECT_TRUE(report.valid) << report.message;
 }
+
+// "Parc" in the P-ARC cases' names puts them in the ThreadSanitizer pass (scripts/test.sh).
+INSTANTIATE_TEST_SUITE_P(Tasks, PandaCage4,
+                         testing::Combine(testing::Range<std::size_t>(0, scenarios::PANDA_CAGE_TASKS),
+                                          testing::Values(0u, 2u)),
+                         [](const auto &info)
+                         {
+                             const unsigned int workers = std::get<1>(info.param);
+                             return "task" + std::to_string(std::get<0>(info.param)) +
+                                    (workers == 0 ? std::string("_Arc") : "_Parc" + std::to_string(workers));
+                         });

@@ -22,13 +22,6 @@ namespace
     {
         return a.first == b.first || a.first == b.second || a.second == b.first || a.second == b.second;
     }
-
-    ob::PlannerStatus solveWith(ArcPlannerBase &planner, const MultiRobotProblem &problem, double limit = 60.)
-    {
-        planner.setProblemDefinition(problem.createProblemDefinition());
-        planner.setup();
-        return planner.solve(ob::timedPlannerTerminationCondition(limit));
-    }
 }  // namespace
 
 class BatchDetection : public testing::TestWithParam<std::tuple<unsigned int, unsigned int, bool>>
@@ -132,7 +125,7 @@ TEST(Parc, OneWorkerComputesWhatArcComputes)
         {
             p->setProfile(profile);
             p->setSeed(9);
-            ASSERT_EQ(solveWith(*p, problem), ob::PlannerStatus::EXACT_SOLUTION) << p->getName();
+            ASSERT_EQ(test::solveWith(*p, problem), ob::PlannerStatus::EXACT_SOLUTION) << p->getName();
         }
         for (std::size_t r = 0; r < 8; ++r)
             EXPECT_EQ(arc.getPlan().getRobotPath(r), parc.getPlan().getRobotPath(r)) << scenario << " robot " << r;
@@ -154,7 +147,7 @@ TEST_P(ParcSolves, AndTheIndependentValidatorAgrees)
     parc.setWorkers(workers);
     parc.setOptimistic(optimistic);
     parc.setSeed(4);
-    ASSERT_EQ(solveWith(parc, problem), ob::PlannerStatus::EXACT_SOLUTION) << parc.getStatusMessage();
+    ASSERT_EQ(test::solveWith(parc, problem), ob::PlannerStatus::EXACT_SOLUTION) << parc.getStatusMessage();
     const auto report = SolutionValidator(problem).validate(parc.getPlan());
     EXPECT_TRUE(report.valid) << report.message;
     const auto &s = parc.getParallelStatistics();
@@ -212,7 +205,7 @@ TEST_P(OrParcSolves, TheWinnerIsValidated)
     orparc.setInstances(instances);
     orparc.setWorkers(workers);
     orparc.setSeed(6);
-    ASSERT_EQ(solveWith(orparc, problem), ob::PlannerStatus::EXACT_SOLUTION) << orparc.getStatusMessage();
+    ASSERT_EQ(test::solveWith(orparc, problem), ob::PlannerStatus::EXACT_SOLUTION) << orparc.getStatusMessage();
     const auto report = SolutionValidator(problem).validate(orparc.getPlan());
     EXPECT_TRUE(report.valid) << report.message;
     ob::PlannerData data(problem.getSpaceInformation());

@@ -4,6 +4,14 @@
 
 #include <cmath>
 
+ompl::base::PlannerStatus ompl_parc::test::solveWith(ompl::base::Planner &planner, const MultiRobotProblem &problem,
+                                                     double limit)
+{
+    planner.setProblemDefinition(problem.createProblemDefinition());
+    planner.setup();
+    return planner.solve(ompl::base::timedPlannerTerminationCondition(limit));
+}
+
 ompl_parc::MultiRobotProblem ompl_parc::test::twoDiscs(std::vector<double> startA, std::vector<double> goalA,
                                                        std::vector<double> startB, std::vector<double> goalB, bool wall,
                                                        double resolution)

@@ -6,6 +6,7 @@
 #include "ompl_parc/SolutionValidator.h"
 #include "ompl_parc/Subproblem.h"
 
+#include <ompl/base/Planner.h>
 #include <ompl/geometric/PathGeometric.h>
 
 #include <random>
@@ -18,6 +19,10 @@ namespace ompl_parc::test
     /** \brief Two discs (radius 0.5) in an empty 20 x 20 box, optionally with a wall box at the origin. */
     MultiRobotProblem twoDiscs(std::vector<double> startA, std::vector<double> goalA, std::vector<double> startB,
                                std::vector<double> goalB, bool wall = false, double resolution = 128.);
+
+    /** \brief Give \e planner the problem, set it up and solve with a time limit of \e limit seconds. */
+    ompl::base::PlannerStatus solveWith(ompl::base::Planner &planner, const MultiRobotProblem &problem,
+                                        double limit = 60.);
 
     /** \brief Seconds within which a planner must return after its termination condition fires. Typical is
         a few milliseconds; the bound is 250 ms (1.5 s in sanitizer builds, which run several times slower)

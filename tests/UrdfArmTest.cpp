@@ -116,6 +116,34 @@ TEST(UrdfArm, PrimitivesBecomeEnclosingCapsules)
     ASSERT_EQ(arm.getSelfCollisionPairs().size(), 1u);
 }
 
+TEST(UrdfArm, KinematicsOfJointsTurningAboutOtherAxesThanZ)
+{
+    // Both joints of the small arm turn about y: link k's direction is (sin s, 0, cos s) with s the sum of
+    // the joint angles up to k, each link 0.4 long. Checks the body, the frames and IK through the Jacobian.
+    const UrdfArm arm("arm", nullptr, smallArm(), "base", "tip", UrdfArm::pose(1., 2., 3., 0., 0., 0.));
+    const std::vector<double> q = {0.5, -0.9};
+    const Eigen::Vector3d base(1., 2., 3.), direction1(std::sin(0.5), 0., std::cos(0.5));
+    const Eigen::Vector3d direction2(std::sin(-0.4), 0., std::cos(-0.4));
+    const Eigen::Vector3d elbow = base + 0.4 * direction1, tip = elbow + 0.4 * direction2;
+    CollisionBody body;
+    arm.computeBody(q.data(), body);
+    ASSERT_EQ(body.size(), 3u);
+    EXPECT_LT((Eigen::Vector3d(body.bx_[1], body.by_[1], body.bz_[1]) - elbow).norm(), 1e-12);
+    EXPECT_LT((Eigen::Vector3d(body.ax_[2], body.ay_[2], body.az_[2]) - elbow).norm(), 1e-12);
+    EXPECT_LT((Eigen::Vector3d(body.bx_[2], body.by_[2], body.bz_[2]) - tip).norm(), 1e-12);
+    std::vector<Eigen::Isometry3d> frames;
+    arm.computeFrames(q.data(), frames);
+    ASSERT_EQ(frames.size(), 3u);
+    EXPECT_LT((frames[2].translation() - elbow).norm(), 1e-12);
+    EXPECT_LT((frames[2].linear() * Eigen::Vector3d::UnitZ() - direction2).norm(), 1e-12);
+    EXPECT_LT((arm.computeTipPose(q.data()).translation() - tip).norm(), 1e-12);
+
+    std::mt19937 rng(5);
+    std::vector<double> solution;
+    ASSERT_TRUE(arm.solvePositionIk(tip, rng, solution));
+    EXPECT_LT((arm.computeTipPose(solution.data()).translation() - tip).norm(), 1e-4);
+}
+
 TEST(UrdfArm, ContinuousJointsAreBoundedToPlusMinusPi)
 {
     const UrdfArm arm("arm", nullptr, smallArm("continuous", ""), "base", "tip", Eigen::Isometry3d::Identity());

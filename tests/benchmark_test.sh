@@ -47,6 +47,36 @@ else
     fail "ompl_benchmark_statistics is missing: run scripts/setup.sh"
 fi
 
+# A scenario file instead of a built-in scenario, relative to the config's folder.
+cp "$(dirname "$0")/../demos/scenarios/doorway_swap.json" "$tmp/"
+cat >"$tmp/file.cfg" <<'CFG'
+[problem]
+name = swap
+file = doorway_swap.json
+
+[benchmark]
+time_limit = 10
+mem_limit = 4096
+run_count = 1
+output = out
+
+[planner]
+arc =
+CFG
+"$bin/ompl_parc_benchmark" "$tmp/file.cfg" 2>"$tmp/err" || { fail "scenario-file benchmark exited non-zero"; cat "$tmp/err"; }
+grep -q '^doorway_swap,4,1,arc,arc,1,1,' "$tmp/out/swap.csv" || fail "CSV lacks the solved doorway_swap run"
+# A missing file, or a file and a built-in scenario at once: exit 2 with a one-line reason.
+for broken in 's|^file = .*|file = missing.json|' 's|^file = .*|file = doorway_swap.json\nscenario = mobile_cross|'; do
+    sed "$broken" "$tmp/file.cfg" >"$tmp/broken.cfg"
+    out=$("$bin/ompl_parc_benchmark" "$tmp/broken.cfg" 2>&1)
+    rc=$?
+    if [ "$rc" -ne 2 ] || [ "$(wc -l <<<"$out")" -ne 1 ]; then
+        fail "broken scenario-file config ($broken): exit $rc, output: $out"
+    else
+        echo "ok:   $out"
+    fi
+done
+
 # bad CONFIG_TAIL PATTERN: a config with this [planner] section must exit 2 with PATTERN on one line.
 bad() {
     sed '/^\[planner\]/,$d' "$tmp/tiny.cfg" >"$tmp/bad.cfg"
