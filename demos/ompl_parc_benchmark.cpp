@@ -73,7 +73,8 @@ int main(int argc, char **argv)
         {
             po::options_description options("Usage: ompl_parc_benchmark [options] CONFIG.cfg\nOptions");
             options.add_options()("config", po::value<std::string>(), "benchmark configuration (OMPL.app INI)")(
-                "help,h", "show this help");
+                "check", "only check the config: load the problem, create every planner, then exit")("help,h",
+                                                                                                     "show this help");
             po::positional_options_description positional;
             positional.add("config", 1);
             const auto vm = tools::parse(argc, argv, options, positional);
@@ -110,6 +111,12 @@ int main(int argc, char **argv)
                     std::cerr << "ompl_parc_benchmark: planner '" << entry.name
                               << "' has no seed parameter: its runs use OMPL's global random sequence\n";
                 planners.push_back(planner);
+            }
+            if (vm.count("check"))
+            {
+                std::cout << config.getProblemName() << ": " << si->getRobotCount() << " robots, " << planners.size()
+                          << " planners, config ok\n";
+                return static_cast<int>(tools::EXIT_SOLVED);
             }
 
             const std::filesystem::path folder = config.getOutput();

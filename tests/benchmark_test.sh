@@ -77,6 +77,11 @@ for broken in 's|^file = .*|file = missing.json|' 's|^file = .*|file = doorway_s
     fi
 done
 
+# Every shipped suite config is valid (problem, planners and parameters, worker budgets), checked without a run.
+for cfg in "$(dirname "$0")"/../demos/benchmarks/*/*.cfg; do
+    "$bin/ompl_parc_benchmark" --check "$cfg" >/dev/null 2>"$tmp/err" || { fail "$cfg: $(cat "$tmp/err")"; }
+done
+
 # bad CONFIG_TAIL PATTERN: a config with this [planner] section must exit 2 with PATTERN on one line.
 bad() {
     sed '/^\[planner\]/,$d' "$tmp/tiny.cfg" >"$tmp/bad.cfg"

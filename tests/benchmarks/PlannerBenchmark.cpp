@@ -1,12 +1,12 @@
-/* ARC-family planners on the paper's 2D scenarios, same seeds side by side in one run: ARC, P-ARC with 2
-   workers, OR-P-ARC 2x1 and P-ARC with 16 workers (oversubscribed on small machines: its wall time is
-   measured, its 16-core time is a projection from per-worker CPU time, labelled as such).
-   Each (planner, scenario) runs once per seed 1..5 (Google Benchmark repetitions, manual time = planning
-   wall time); every result is re-checked by the SolutionValidator and an invalid or failed run aborts the
-   benchmark. At the end a Markdown table gives the median time, the median per-stage wall times, the
-   median projected W-core time (P-ARC) and the speedups of medians against ARC on the same scenario and
-   seeds.
-   Usage: ompl_parc_bench_planners [--benchmark_filter=REGEX] (the table covers what ran). */
+/* ARC-family planners on the paper's 2D scenarios and on Panda Cage 4, same seeds side by side in one run:
+   ARC, P-ARC with 2 workers, OR-P-ARC 2x1 and P-ARC with 16 workers (oversubscribed on small machines: its
+   wall time is measured, its 16-core time is a projection from per-worker CPU time, labelled as such).
+   Each (planner, scenario) runs once per seed 1..5 (Panda Cage: each of its 5 tasks with seeds 1 and 2)
+   (Google Benchmark repetitions, manual time = planning wall time); every result is re-checked by the
+   SolutionValidator and an invalid or failed run aborts the benchmark. At the end a Markdown table gives the median
+   time, the median per-stage wall times, the median projected W-core time (P-ARC) and the speedups of medians against
+   ARC on the same scenario and seeds. Usage: ompl_parc_bench_planners [--benchmark_filter=REGEX] (the table covers what
+   ran). */
 #include "ompl_parc/SolutionValidator.h"
 #include "ompl_parc/planners/ARC.h"
 #include "ompl_parc/planners/ORPARC.h"
@@ -35,6 +35,9 @@ namespace
         std::string scenario;
         std::size_t robots;
         std::string profile;
+        /** \brief Run k plans task k % tasks with seed k / tasks + 1, for seeds * tasks runs. */
+        std::size_t tasks{1};
+        int seeds{SEEDS};
     };
 
     struct Run
@@ -60,10 +63,11 @@ namespace
         auto &runs = results()[{label(c), name}];
         for (auto _ : state)
         {
-            const auto problem = scenarios::createScenario(c.scenario, c.robots);
+            const std::size_t run = runs.size() % (c.tasks * static_cast<std::size_t>(c.seeds));
+            const auto problem = scenarios::createScenario(c.scenario, c.robots, 128., run % c.tasks);
             auto planner = factory(problem.getSpaceInformation());
             planner->setProfile(c.profile);
-            planner->setSeed(static_cast<unsigned int>(runs.size() % SEEDS + 1));
+            planner->setSeed(static_cast<unsigned int>(run / c.tasks + 1));
             planner->setProblemDefinition(problem.createProblemDefinition());
             planner->setup();
             const auto start = ompl::time::now();
@@ -142,7 +146,8 @@ int main(int argc, char **argv)
     const std::vector<Case> cases = {{"mobile_cross", 16, "mobile"},
                                      {"mobile_cross", 64, "mobile"},
                                      {"planar_cross", 8, "planar"},
-                                     {"planar_cross", 16, "planar"}};
+                                     {"planar_cross", 16, "planar"},
+                                     {"panda_cage", 4, "panda", 5, 2}};
     const auto parc = [](unsigned int workers)
     {
         return [workers](const ompl::base::SpaceInformationPtr &si)
@@ -170,7 +175,7 @@ int main(int argc, char **argv)
                                          [name = name, factory = factory, c](benchmark::State &state)
                                          { runPlanner(state, name, factory, c); })
                 ->Iterations(1)
-                ->Repetitions(SEEDS)
+                ->Repetitions(static_cast<int>(c.tasks) * c.seeds)
                 ->UseManualTime()
                 ->Unit(benchmark::kMillisecond)
                 ->ReportAggregatesOnly(true);
