@@ -8,12 +8,7 @@
 
 ompl_parc::BatchDetector::BatchDetector(ConflictDetector &detector, WorkerPool &pool, unsigned int horizon,
                                         bool optimistic)
-    : detector_(detector),
-      pool_(pool),
-      horizon_(horizon),
-      optimistic_(optimistic),
-      workerPairs_(pool.getWorkerCount()),
-      bodies_(detector.getSpaceInformation())
+    : detector_(detector), pool_(pool), horizon_(horizon), optimistic_(optimistic), workerPairs_(pool.getWorkerCount())
 {
     if (horizon == 0)
         throw ompl::Exception("BatchDetector", "the horizon must be at least 1 timestep");
@@ -34,10 +29,9 @@ std::vector<ompl_parc::BatchEntry> ompl_parc::BatchDetector::detect(const MultiR
          from += horizon_)
     {
         const std::size_t to = std::min<std::size_t>(from + horizon_, makespan + 1);
-        bodies_.reset(plan, from, to);
         const auto cpu =
             pool_.run([&](unsigned int worker)
-                      { found[worker] = detector_.scan(plan, workerPairs_[worker], from, to, false, skip, &bodies_); });
+                      { found[worker] = detector_.scan(plan, workerPairs_[worker], from, to, false, skip); });
         // The coordinator merges the candidates in temporal order and grows the batch.
         const double mergeStart = StageClock::threadCpu();
         std::vector<Conflict> candidates;

@@ -17,8 +17,7 @@ namespace ompl_parc
         pairs the batch no longer needs; the coordinator then merges the candidates in temporal order, grows
         each into its robot set through the repair cache and offers it to the ConflictBatch, until the batch
         holds W conflicts or the plan ends. The frontiers of the shared ConflictDetector carry over between
-        calls. With W = 1 the batch is exactly the sequential earliest conflict. The robots' bodies of a round
-        are computed once and shared by the workers (SharedBodies). */
+        calls. With W = 1 the batch is exactly the sequential earliest conflict. */
     class BatchDetector
     {
       public:
@@ -37,7 +36,6 @@ namespace ompl_parc
         unsigned int horizon_;
         bool optimistic_;
         std::vector<std::vector<std::size_t>> workerPairs_;
-        SharedBodies bodies_;
     };
 }  // namespace ompl_parc
 

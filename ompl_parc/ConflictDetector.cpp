@@ -92,8 +92,7 @@ std::optional<ompl_parc::Conflict> ompl_parc::ConflictDetector::findEarliest(con
 std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRobotPlan &plan,
                                                                    const std::vector<std::size_t> &pairs,
                                                                    std::size_t from, std::size_t to,
-                                                                   bool firstTimestepOnly, const PairFilter &skip,
-                                                                   SharedBodies *shared)
+                                                                   bool firstTimestepOnly, const PairFilter &skip)
 {
     // The pairs that still need checking in [from, to): the next timestep each needs, the last one and
     // the end of the segment its swept bounds were last tested for. Frontiers are tracked here and written
@@ -126,24 +125,16 @@ std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRo
         }
     }
 
-    // Bodies are computed once per robot and timestep, only for robots that some active pair needs (or taken
-    // from the round's shared ones).
+    // Bodies are computed once per robot and timestep, only for robots that some active pair needs.
     std::vector<std::size_t> stamp(robots_, std::numeric_limits<std::size_t>::max());
-    std::vector<const CollisionBody *> current(robots_, nullptr);
     const auto body = [&](std::size_t robot, std::size_t step) -> const CollisionBody &
     {
         if (stamp[robot] != step)
         {
+            si_.getRobot(robot)->computeBody(plan.getConfig(robot, step), bodies[robot]);
             stamp[robot] = step;
-            if (shared != nullptr && shared->covers(step))
-                current[robot] = &shared->get(robot, step, bodies[robot]);
-            else
-            {
-                si_.getRobot(robot)->computeBody(plan.getConfig(robot, step), bodies[robot]);
-                current[robot] = &bodies[robot];
-            }
         }
-        return *current[robot];
+        return bodies[robot];
     };
 
     // One pass over the active pairs per timestep that some pair needs; t then jumps to the next such one.

@@ -5,7 +5,6 @@
 #include "ompl_parc/Conflict.h"
 #include "ompl_parc/MultiRobotPlan.h"
 #include "ompl_parc/MultiRobotSpaceInformation.h"
-#include "ompl_parc/SharedBodies.h"
 
 #include <array>
 #include <functional>
@@ -63,13 +62,9 @@ namespace ompl_parc
             pair is scanned to its own first conflict or to \e to, and all those first conflicts are returned
             in (timestep, pair) order. Pairs \e skip rejects are not checked, nor pairs whose frontier is before
             \e from (they stop at a known conflict). Frontiers of checked pairs advance to their first
-            unchecked or conflicting timestep: a frontier never passes an unchecked or conflicting timestep.
-            Bodies at timesteps \e shared covers come from it (concurrent scans of one round share them). */
+            unchecked or conflicting timestep: a frontier never passes an unchecked or conflicting timestep. */
         std::vector<Conflict> scan(const MultiRobotPlan &plan, const std::vector<std::size_t> &pairs, std::size_t from,
-                                   std::size_t to, bool firstTimestepOnly, const PairFilter &skip = {},
-                                   SharedBodies *shared = nullptr);
-
-        const MultiRobotSpaceInformation &getSpaceInformation() const { return si_; }
+                                   std::size_t to, bool firstTimestepOnly, const PairFilter &skip = {});
 
         /** \brief The first timestep some pair of \e plan still needs checked (makespan + 1 if none). */
         std::size_t firstUnvalidated(const MultiRobotPlan &plan) const;
