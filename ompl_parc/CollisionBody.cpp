@@ -40,6 +40,14 @@ void ompl_parc::CollisionBody::updateBound()
         centerX_ = centerY_ = centerZ_ = boundRadius_ = 0.;
         return;
     }
+    if (n == 1 && spheresOnly_)  // a disc or a single sphere bounds itself (the common 2D case: keep it cheap)
+    {
+        sphereX_[0] = centerX_ = ax_[0];
+        sphereY_[0] = centerY_ = ay_[0];
+        sphereZ_[0] = centerZ_ = az_[0];
+        sphereRadius_[0] = boundRadius_ = radius_[0];
+        return;
+    }
     // Restricted plain pointers: distinct vectors never alias, which the compiler cannot prove by itself
     // (without it the loops stay scalar).
     const double *__restrict ax = ax_.data(), *__restrict ay = ay_.data(), *__restrict az = az_.data();
