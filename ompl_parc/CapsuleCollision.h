@@ -16,8 +16,11 @@ namespace ompl_parc
 
     /** \brief True if any capsule of \e a overlaps any capsule of \e b.
 
-        This is the robot-robot test on the hot path of conflict detection: a bounding-sphere early-out,
-        then, per capsule of \e a, one vectorisable pass over all capsules of \e b. */
+        This is the robot-robot test on the hot path of conflict detection. Two levels of bounding spheres
+        come before any exact test: the bodies' spheres, then each capsule's sphere against the other body's
+        (those that reach it are gathered into small local arrays); per gathered capsule of \e a, one
+        vectorised pass of sphere-sphere clearances over the gathered ones of \e b, and the exact segment
+        distance only where two capsule spheres overlap. The answer is exactly that of testing all pairs. */
     bool bodiesCollide(const CollisionBody &a, const CollisionBody &b);
 }  // namespace ompl_parc
 
