@@ -1,6 +1,6 @@
 #include "ToolSupport.h"
 
-#include "ompl_parc/ScenarioFile.h"
+#include "ompl_parc/io/ScenarioFile.h"
 #include "ompl_parc/planners/ARC.h"
 #include "ompl_parc/planners/EPRRTConnect.h"
 #include "ompl_parc/planners/ORPARC.h"

@@ -1,8 +1,8 @@
 #ifndef OMPL_PARC_DEMOS_TOOL_SUPPORT_
 #define OMPL_PARC_DEMOS_TOOL_SUPPORT_
 
-#include "ompl_parc/MultiRobotPlan.h"
-#include "ompl_parc/MultiRobotProblem.h"
+#include "ompl_parc/model/MultiRobotPlan.h"
+#include "ompl_parc/model/MultiRobotProblem.h"
 
 #include <boost/program_options.hpp>
 #include <ompl/base/Planner.h>

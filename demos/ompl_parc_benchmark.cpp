@@ -6,9 +6,9 @@
 #include "BenchmarkConfig.h"
 #include "ToolSupport.h"
 
-#include "ompl_parc/ScenarioFile.h"
-#include "ompl_parc/SolutionValidator.h"
+#include "ompl_parc/io/ScenarioFile.h"
 #include "ompl_parc/scenarios/Scenarios.h"
+#include "ompl_parc/validation/SolutionValidator.h"
 
 #include <ompl/base/goals/GoalState.h>
 #include <ompl/geometric/SimpleSetup.h>

@@ -5,11 +5,11 @@
 #include "ProgressLine.h"
 #include "ToolSupport.h"
 
-#include "ompl_parc/GeometryFile.h"
-#include "ompl_parc/SolutionFile.h"
-#include "ompl_parc/SolutionValidator.h"
-#include "ompl_parc/SvgWriter.h"
+#include "ompl_parc/io/GeometryFile.h"
+#include "ompl_parc/io/SolutionFile.h"
+#include "ompl_parc/io/SvgWriter.h"
 #include "ompl_parc/planners/ArcPlannerBase.h"
+#include "ompl_parc/validation/SolutionValidator.h"
 
 #include <ompl/util/RandomNumbers.h>
 #include <ompl/util/Time.h>

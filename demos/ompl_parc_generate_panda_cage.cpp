@@ -5,7 +5,7 @@
    Exit 0: all written; 2: bad input or a task that could not be generated. */
 #include "ToolSupport.h"
 
-#include "ompl_parc/ScenarioFile.h"
+#include "ompl_parc/io/ScenarioFile.h"
 #include "ompl_parc/scenarios/ConflictingPairs.h"
 #include "ompl_parc/scenarios/PandaCage.h"
 

@@ -2,8 +2,8 @@
    Exit 0: valid; 1: invalid (the first violation is printed); 2: bad input (one-line reason). */
 #include "ToolSupport.h"
 
-#include "ompl_parc/SolutionFile.h"
-#include "ompl_parc/SolutionValidator.h"
+#include "ompl_parc/io/SolutionFile.h"
+#include "ompl_parc/validation/SolutionValidator.h"
 
 #include <iostream>
 

@@ -1,8 +1,8 @@
 /* Using P-ARC from plain OMPL code: a team of four discs, OMPL's SimpleSetup, composite ScopedStates for
    the start and goal, PARC as the planner, and the validated per-robot plan read back. (README's API example.) */
-#include <ompl_parc/DiscRobot.h>
-#include <ompl_parc/MultiRobotSpaceInformation.h>
-#include <ompl_parc/SolutionValidator.h>
+#include <ompl_parc/robots/DiscRobot.h>
+#include <ompl_parc/model/MultiRobotSpaceInformation.h>
+#include <ompl_parc/validation/SolutionValidator.h>
 #include <ompl_parc/planners/PARC.h>
 
 #include <ompl/base/ScopedState.h>

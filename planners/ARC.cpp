@@ -1,8 +1,8 @@
 #include "ompl_parc/planners/ARC.h"
 
-#include "ompl_parc/InitialPlanner.h"
-#include "ompl_parc/SeededRealVectorSampler.h"
-#include "ompl_parc/StageClock.h"
+#include "ompl_parc/arc/InitialPlanner.h"
+#include "ompl_parc/parallel/StageClock.h"
+#include "ompl_parc/util/SeededRealVectorSampler.h"
 
 ompl_parc::ARC::ARC(const ompl::base::SpaceInformationPtr &si) : ArcPlannerBase(si, "ARC") {}
 

@@ -1,9 +1,9 @@
 #include "ompl_parc/planners/ArcPlannerBase.h"
 
-#include "ompl_parc/CompositeRRTConnectSolver.h"
-#include "ompl_parc/PrioritizedSTRRTSolver.h"
-#include "ompl_parc/SeededRealVectorSampler.h"
-#include "ompl_parc/StageClock.h"
+#include "ompl_parc/parallel/StageClock.h"
+#include "ompl_parc/planners/subproblem/CompositeRRTConnectSolver.h"
+#include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
+#include "ompl_parc/util/SeededRealVectorSampler.h"
 
 #include <ompl/base/goals/GoalState.h>
 #include <ompl/util/Exception.h>

@@ -1,12 +1,12 @@
 #ifndef OMPL_PARC_PLANNERS_ARC_PLANNER_BASE_
 #define OMPL_PARC_PLANNERS_ARC_PLANNER_BASE_
 
-#include "ompl_parc/ArcSettings.h"
-#include "ompl_parc/ConflictDetector.h"
-#include "ompl_parc/ConflictResolver.h"
-#include "ompl_parc/MultiRobotPlan.h"
-#include "ompl_parc/MultiRobotProblem.h"
-#include "ompl_parc/RepairCache.h"
+#include "ompl_parc/arc/ArcSettings.h"
+#include "ompl_parc/arc/ConflictDetector.h"
+#include "ompl_parc/arc/ConflictResolver.h"
+#include "ompl_parc/arc/RepairCache.h"
+#include "ompl_parc/model/MultiRobotPlan.h"
+#include "ompl_parc/model/MultiRobotProblem.h"
 
 #include <ompl/base/Planner.h>
 

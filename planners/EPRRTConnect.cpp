@@ -1,6 +1,6 @@
 #include "ompl_parc/planners/EPRRTConnect.h"
 
-#include "ompl_parc/SeededRealVectorSampler.h"
+#include "ompl_parc/util/SeededRealVectorSampler.h"
 
 #include <ompl/base/goals/GoalSampleableRegion.h>
 #include <ompl/datastructures/NearestNeighborsGNATNoThreadSafety.h>

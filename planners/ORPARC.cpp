@@ -1,6 +1,6 @@
 #include "ompl_parc/planners/ORPARC.h"
 
-#include "ompl_parc/SeededRealVectorSampler.h"
+#include "ompl_parc/util/SeededRealVectorSampler.h"
 
 #include <ompl/tools/multiplan/ParallelPlan.h>
 #include <ompl/util/Exception.h>

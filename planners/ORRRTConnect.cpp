@@ -1,7 +1,7 @@
 #include "ompl_parc/planners/ORRRTConnect.h"
 
-#include "ompl_parc/SeededRealVectorSampler.h"
 #include "ompl_parc/planners/EPRRTConnect.h"
+#include "ompl_parc/util/SeededRealVectorSampler.h"
 
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
 #include <ompl/tools/multiplan/ParallelPlan.h>

@@ -1,7 +1,7 @@
 #ifndef OMPL_PARC_PLANNERS_OR_RRT_CONNECT_
 #define OMPL_PARC_PLANNERS_OR_RRT_CONNECT_
 
-#include "ompl_parc/MultiRobotSpaceInformation.h"
+#include "ompl_parc/model/MultiRobotSpaceInformation.h"
 
 #include <ompl/base/Planner.h>
 

@@ -1,9 +1,9 @@
 #include "ompl_parc/planners/PARC.h"
 
-#include "ompl_parc/InitialPlanner.h"
-#include "ompl_parc/OrTaskRunner.h"
-#include "ompl_parc/SeededRealVectorSampler.h"
-#include "ompl_parc/StageClock.h"
+#include "ompl_parc/arc/InitialPlanner.h"
+#include "ompl_parc/parallel/OrTaskRunner.h"
+#include "ompl_parc/parallel/StageClock.h"
+#include "ompl_parc/util/SeededRealVectorSampler.h"
 
 #include <ompl/util/Exception.h>
 

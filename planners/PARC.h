@@ -1,8 +1,8 @@
 #ifndef OMPL_PARC_PLANNERS_PARC_
 #define OMPL_PARC_PLANNERS_PARC_
 
-#include "ompl_parc/BatchDetector.h"
-#include "ompl_parc/WorkerPool.h"
+#include "ompl_parc/arc/BatchDetector.h"
+#include "ompl_parc/parallel/WorkerPool.h"
 #include "ompl_parc/planners/ArcPlannerBase.h"
 
 #include <memory>

@@ -1,6 +1,6 @@
 #include "ompl_parc/planners/PrioritizedSTRRT.h"
 
-#include "ompl_parc/MultiRobotPlan.h"
+#include "ompl_parc/model/MultiRobotPlan.h"
 
 #include <ompl/base/goals/GoalState.h>
 #include <ompl/util/Exception.h>

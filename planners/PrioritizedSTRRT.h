@@ -1,9 +1,9 @@
 #ifndef OMPL_PARC_PLANNERS_PRIORITIZED_STRRT_
 #define OMPL_PARC_PLANNERS_PRIORITIZED_STRRT_
 
-#include "ompl_parc/MultiRobotPlan.h"
-#include "ompl_parc/MultiRobotSpaceInformation.h"
-#include "ompl_parc/PrioritizedSTRRTSolver.h"
+#include "ompl_parc/model/MultiRobotPlan.h"
+#include "ompl_parc/model/MultiRobotSpaceInformation.h"
+#include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
 
 #include <ompl/base/Planner.h>
 #include <ompl/util/RandomNumbers.h>

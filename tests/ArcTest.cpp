@@ -1,8 +1,8 @@
 #include "TestProblems.h"
 
-#include "ompl_parc/SolutionValidator.h"
 #include "ompl_parc/planners/ARC.h"
 #include "ompl_parc/scenarios/Scenarios.h"
+#include "ompl_parc/validation/SolutionValidator.h"
 
 #include <gtest/gtest.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>

@@ -1,4 +1,4 @@
-#include "ompl_parc/SolutionValidator.h"
+#include "ompl_parc/validation/SolutionValidator.h"
 #include "ompl_parc/planners/EPRRTConnect.h"
 #include "ompl_parc/planners/ORPPSTRRT.h"
 #include "ompl_parc/planners/ORRRTConnect.h"

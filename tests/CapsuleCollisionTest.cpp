@@ -1,4 +1,4 @@
-#include "ompl_parc/CapsuleCollision.h"
+#include "ompl_parc/collision/CapsuleCollision.h"
 
 #include <fcl/geometry/shape/capsule.h>
 #include <fcl/geometry/shape/sphere.h>

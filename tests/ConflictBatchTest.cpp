@@ -1,4 +1,4 @@
-#include "ompl_parc/ConflictBatch.h"
+#include "ompl_parc/arc/ConflictBatch.h"
 
 #include <gtest/gtest.h>
 

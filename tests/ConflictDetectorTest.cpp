@@ -1,7 +1,7 @@
 #include "TestProblems.h"
 
-#include "ompl_parc/ConflictDetector.h"
-#include "ompl_parc/RepairCache.h"
+#include "ompl_parc/arc/ConflictDetector.h"
+#include "ompl_parc/arc/RepairCache.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 
 #include <gtest/gtest.h>

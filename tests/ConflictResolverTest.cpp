@@ -1,6 +1,6 @@
 #include "TestProblems.h"
 
-#include "ompl_parc/ConflictResolver.h"
+#include "ompl_parc/arc/ConflictResolver.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 
 #include <gtest/gtest.h>

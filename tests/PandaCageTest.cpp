@@ -1,13 +1,14 @@
 #include "TestProblems.h"
 
-#include "ompl_parc/ScenarioFile.h"
-#include "ompl_parc/SolutionValidator.h"
-#include "ompl_parc/UrdfArm.h"
+#include "ompl_parc/io/ScenarioFile.h"
 #include "ompl_parc/planners/ARC.h"
 #include "ompl_parc/planners/PARC.h"
+#include "ompl_parc/robots/BuiltinModels.h"
+#include "ompl_parc/robots/UrdfArm.h"
 #include "ompl_parc/scenarios/ConflictingPairs.h"
 #include "ompl_parc/scenarios/PandaCage.h"
 #include "ompl_parc/scenarios/Scenarios.h"
+#include "ompl_parc/validation/SolutionValidator.h"
 
 #include <nlohmann/json.hpp>
 #include <ompl/util/Exception.h>
@@ -113,7 +114,7 @@ TEST(PandaCage, BaseInABarIsNamedInTheError)
     EXPECT_NE(errorOf(
                   [&]
                   {
-                      UrdfArm("arm", environment, scenarios::pandaUrdf(), "panda_link0", "panda_link8",
+                      UrdfArm("arm", environment, models::pandaUrdf(), "panda_link0", "panda_link8",
                               UrdfArm::pose(-0.5, -1.0, -0.3, 0., 0., 0.));
                   })
                   .find("link 'panda_link0', fixed to the base, collides with obstacle 'bar0'"),

@@ -1,5 +1,6 @@
-#include "ompl_parc/CapsuleCollision.h"
-#include "ompl_parc/UrdfFclModel.h"
+#include "ompl_parc/collision/CapsuleCollision.h"
+#include "ompl_parc/robots/BuiltinModels.h"
+#include "ompl_parc/robots/UrdfFclModel.h"
 #include "ompl_parc/scenarios/PandaCage.h"
 
 #include <gtest/gtest.h>
@@ -14,7 +15,7 @@ TEST(PandaCollision, CapsuleModelFlagsEveryPairFclFindsInCollision)
     // Two Pandas facing each other 0.6 apart, the second one hanging from a ceiling 1.2 up: random
     // configurations give a mix of far, near and deeply interpenetrating pairs.
     const auto load = [](const Eigen::Isometry3d &base)
-    { return std::make_shared<UrdfArm>("panda", nullptr, scenarios::pandaUrdf(), "panda_link0", "panda_link8", base); };
+    { return std::make_shared<UrdfArm>("panda", nullptr, models::pandaUrdf(), "panda_link0", "panda_link8", base); };
     const auto a = load(Eigen::Isometry3d::Identity());
     const auto b = load(UrdfArm::pose(0.6, 0., 1.2, M_PI, 0., M_PI));
     UrdfFclModel exactA(a), exactB(b);

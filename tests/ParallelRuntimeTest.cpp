@@ -1,5 +1,5 @@
-#include "ompl_parc/OrTaskRunner.h"
-#include "ompl_parc/WorkerPool.h"
+#include "ompl_parc/parallel/OrTaskRunner.h"
+#include "ompl_parc/parallel/WorkerPool.h"
 
 #include <gtest/gtest.h>
 #include <ompl/util/Exception.h>

@@ -1,11 +1,11 @@
 #include "TestProblems.h"
 
-#include "ompl_parc/BatchDetector.h"
-#include "ompl_parc/SolutionValidator.h"
+#include "ompl_parc/arc/BatchDetector.h"
 #include "ompl_parc/planners/ARC.h"
 #include "ompl_parc/planners/ORPARC.h"
 #include "ompl_parc/planners/PARC.h"
 #include "ompl_parc/scenarios/Scenarios.h"
+#include "ompl_parc/validation/SolutionValidator.h"
 
 #include <gtest/gtest.h>
 #include <ompl/util/Exception.h>

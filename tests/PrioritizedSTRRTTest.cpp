@@ -1,10 +1,10 @@
 #include "TestProblems.h"
 
-#include "ompl_parc/DiscRobot.h"
-#include "ompl_parc/DynamicObstacles.h"
-#include "ompl_parc/PrioritizedSTRRTSolver.h"
 #include "ompl_parc/planners/PrioritizedSTRRT.h"
+#include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
+#include "ompl_parc/robots/DiscRobot.h"
 #include "ompl_parc/scenarios/Scenarios.h"
+#include "ompl_parc/spacetime/DynamicObstacles.h"
 
 #include <gtest/gtest.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>

@@ -1,5 +1,5 @@
-#include "ompl_parc/DiscRobot.h"
-#include "ompl_parc/PlanarArm.h"
+#include "ompl_parc/robots/DiscRobot.h"
+#include "ompl_parc/robots/PlanarArm.h"
 
 #include <gtest/gtest.h>
 #include <ompl/util/Exception.h>

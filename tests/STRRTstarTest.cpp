@@ -1,8 +1,8 @@
 #include "TestProblems.h"
 
-#include "ompl_parc/DynamicObstacles.h"
-#include "ompl_parc/SpaceTimeMotionValidator.h"
 #include "ompl_parc/planners/STRRTstar.h"
+#include "ompl_parc/spacetime/DynamicObstacles.h"
+#include "ompl_parc/spacetime/SpaceTimeMotionValidator.h"
 
 #include <gtest/gtest.h>
 #include <ompl/base/ScopedState.h>

@@ -1,11 +1,12 @@
-#include "ompl_parc/DiscRobot.h"
-#include "ompl_parc/PlanarArm.h"
-#include "ompl_parc/UrdfArm.h"
-#include "ompl_parc/ScenarioFile.h"
-#include "ompl_parc/SolutionValidator.h"
+#include "ompl_parc/robots/BuiltinModels.h"
+#include "ompl_parc/io/ScenarioFile.h"
 #include "ompl_parc/planners/ARC.h"
+#include "ompl_parc/robots/DiscRobot.h"
+#include "ompl_parc/robots/PlanarArm.h"
+#include "ompl_parc/robots/UrdfArm.h"
 #include "ompl_parc/scenarios/PandaCage.h"
 #include "ompl_parc/scenarios/Scenarios.h"
+#include "ompl_parc/validation/SolutionValidator.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -202,13 +203,13 @@ TEST(ScenarioFile, UrdfArmsNameABuiltInModelOrAFileBesideTheScenario)
     // A relative "urdf_file" is found beside the scenario file, whatever the current folder.
     const std::string folder = testing::TempDir() + "/ompl_parc_urdf_scenario";
     std::filesystem::create_directories(folder);
-    std::ofstream(folder + "/arm.urdf") << scenarios::pandaUrdf();
+    std::ofstream(folder + "/arm.urdf") << models::pandaUrdf();
     doc["robots"][0].erase("builtin_urdf");
     doc["robots"][0]["urdf_file"] = "arm.urdf";
     std::ofstream(folder + "/scenario.json") << doc.dump();
     const auto loaded = ScenarioFile::read(folder + "/scenario.json");
     EXPECT_EQ(dynamic_cast<const UrdfArm &>(*loaded.getSpaceInformation()->getRobot(0)).getUrdfXml(),
-              scenarios::pandaUrdf());
+              models::pandaUrdf());
     EXPECT_EQ(ScenarioFile::toJson(loaded), ScenarioFile::toJson(panda));
     std::filesystem::remove_all(folder);
 

@@ -1,4 +1,4 @@
-#include "ompl_parc/PlanarArm.h"
+#include "ompl_parc/robots/PlanarArm.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 #include "TestProblems.h"
 
-#include "ompl_parc/SolutionFile.h"
+#include "ompl_parc/io/SolutionFile.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 #include "TestProblems.h"
 
-#include "ompl_parc/SolutionValidator.h"
 #include "ompl_parc/scenarios/Scenarios.h"
+#include "ompl_parc/validation/SolutionValidator.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "ompl_parc/statespaces/SpaceTime.h"
+#include "ompl_parc/planners/SpaceTime.h"
 
 #include <gtest/gtest.h>
 #include <ompl/base/ScopedState.h>

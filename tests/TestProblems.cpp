@@ -1,6 +1,6 @@
 #include "TestProblems.h"
 
-#include "ompl_parc/DiscRobot.h"
+#include "ompl_parc/robots/DiscRobot.h"
 
 #include <cmath>
 

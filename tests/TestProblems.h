@@ -1,10 +1,10 @@
 #ifndef OMPL_PARC_TESTS_TEST_PROBLEMS_
 #define OMPL_PARC_TESTS_TEST_PROBLEMS_
 
-#include "ompl_parc/MultiRobotPlan.h"
-#include "ompl_parc/MultiRobotProblem.h"
-#include "ompl_parc/SolutionValidator.h"
-#include "ompl_parc/Subproblem.h"
+#include "ompl_parc/arc/Subproblem.h"
+#include "ompl_parc/model/MultiRobotPlan.h"
+#include "ompl_parc/model/MultiRobotProblem.h"
+#include "ompl_parc/validation/SolutionValidator.h"
 
 #include <ompl/base/Planner.h>
 #include <ompl/geometric/PathGeometric.h>
@@ -12,7 +12,7 @@
 #include <random>
 #include <vector>
 
-#include "ompl_parc/Conflict.h"
+#include "ompl_parc/arc/Conflict.h"
 
 namespace ompl_parc::test
 {

@@ -1,4 +1,5 @@
-#include "ompl_parc/UrdfArm.h"
+#include "ompl_parc/robots/BuiltinModels.h"
+#include "ompl_parc/robots/UrdfArm.h"
 #include "ompl_parc/scenarios/PandaCage.h"
 
 #include <ompl/util/Exception.h>
@@ -13,7 +14,7 @@ namespace
 {
     std::shared_ptr<UrdfArm> panda(const Eigen::Isometry3d &base = Eigen::Isometry3d::Identity())
     {
-        return std::make_shared<UrdfArm>("panda", nullptr, scenarios::pandaUrdf(), "panda_link0", "panda_link8", base);
+        return std::make_shared<UrdfArm>("panda", nullptr, models::pandaUrdf(), "panda_link0", "panda_link8", base);
     }
 
     /** A two-joint arm with one box, one cylinder and one sphere; \e extra is spliced in before </robot>. */

@@ -105,7 +105,7 @@ panda_edit "$tmp/in_bar.json" 'doc["robots"][0]["base_pose"]["position"] = [-0.5
 expect 2 "robot 'panda0': link 'panda_link0', fixed to the base, collides with obstacle 'bar0'" \
     "$bin/ompl_parc_demo" --scenario-file "$tmp/in_bar.json"
 panda_edit "$tmp/no_limit.json" "import re; r = doc['robots'][1]; r.pop('builtin_urdf'); \
-r['urdf'] = re.sub(r'<limit[^>]*/>', '', open('$scenarios/../resources/panda.urdf').read(), count=1)"
+r['urdf'] = re.sub(r'<limit[^>]*/>', '', open('$scenarios/../../ompl_parc/robots/models/panda.urdf').read(), count=1)"
 expect 2 "malformed URDF: Joint \[panda_joint1\] is of type REVOLUTE but it does not specify limits" \
     "$bin/ompl_parc_demo" --scenario-file "$tmp/no_limit.json"
 expect 0 "^1$" bash -c "'$bin/ompl_parc_demo' --scenario-file '$tmp/no_limit.json' 2>&1 | wc -l"

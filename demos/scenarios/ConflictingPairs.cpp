@@ -1,8 +1,8 @@
 #include "ompl_parc/scenarios/ConflictingPairs.h"
 
-#include "ompl_parc/ConflictDetector.h"
-#include "ompl_parc/InitialPlanner.h"
-#include "ompl_parc/SeededRealVectorSampler.h"
+#include "ompl_parc/arc/ConflictDetector.h"
+#include "ompl_parc/arc/InitialPlanner.h"
+#include "ompl_parc/util/SeededRealVectorSampler.h"
 
 #include <ompl/util/Exception.h>
 

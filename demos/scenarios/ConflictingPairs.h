@@ -1,7 +1,7 @@
 #ifndef OMPL_PARC_SCENARIOS_CONFLICTING_PAIRS_
 #define OMPL_PARC_SCENARIOS_CONFLICTING_PAIRS_
 
-#include "ompl_parc/MultiRobotProblem.h"
+#include "ompl_parc/model/MultiRobotProblem.h"
 
 namespace ompl_parc
 {

@@ -1,8 +1,9 @@
 #include "ompl_parc/scenarios/PandaCage.h"
 
-#include "ompl_parc/CapsuleCollision.h"
-#include "ompl_parc/ScenarioFile.h"
-#include "ompl_parc/UrdfArm.h"
+#include "ompl_parc/collision/CapsuleCollision.h"
+#include "ompl_parc/io/ScenarioFile.h"
+#include "ompl_parc/robots/BuiltinModels.h"
+#include "ompl_parc/robots/UrdfArm.h"
 #include "ompl_parc/scenarios/ConflictingPairs.h"
 
 #include <ompl/util/Exception.h>
@@ -176,7 +177,7 @@ namespace ompl_parc::scenarios
         const auto environment = createCage();
         std::vector<std::shared_ptr<UrdfArm>> team;
         for (const auto &base : basePoses(robots))
-            team.push_back(std::make_shared<UrdfArm>("panda" + std::to_string(team.size()), environment, pandaUrdf(),
+            team.push_back(std::make_shared<UrdfArm>("panda" + std::to_string(team.size()), environment, models::pandaUrdf(),
                                                      "panda_link0", "panda_link8", base));
         // The authors' effort: 100 targets per robot and 100 team restarts for 2 robots, 200 for 4, ... 400 for 16.
         const auto attempts = static_cast<unsigned int>(100 * std::log2(static_cast<double>(robots)));

@@ -1,7 +1,7 @@
 #ifndef OMPL_PARC_SCENARIOS_PANDA_CAGE_
 #define OMPL_PARC_SCENARIOS_PANDA_CAGE_
 
-#include "ompl_parc/MultiRobotProblem.h"
+#include "ompl_parc/model/MultiRobotProblem.h"
 
 #include <Eigen/Geometry>
 
@@ -12,9 +12,6 @@ namespace ompl_parc
 {
     namespace scenarios
     {
-        /** \brief The Franka Panda model of demos/resources/panda.urdf (compiled into the library). */
-        const std::string &pandaUrdf();
-
         /** \brief Number of tasks (start/goal sets) per team size of Panda Cage. */
         constexpr std::size_t PANDA_CAGE_TASKS = 5;
 

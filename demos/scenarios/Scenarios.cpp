@@ -1,7 +1,7 @@
 #include "ompl_parc/scenarios/Scenarios.h"
 
-#include "ompl_parc/DiscRobot.h"
-#include "ompl_parc/PlanarArm.h"
+#include "ompl_parc/robots/DiscRobot.h"
+#include "ompl_parc/robots/PlanarArm.h"
 #include "ompl_parc/scenarios/PandaCage.h"
 
 #include <ompl/util/Exception.h>

@@ -1,7 +1,7 @@
 #ifndef OMPL_PARC_SCENARIOS_SCENARIOS_
 #define OMPL_PARC_SCENARIOS_SCENARIOS_
 
-#include "ompl_parc/MultiRobotProblem.h"
+#include "ompl_parc/model/MultiRobotProblem.h"
 
 #include <string>
 #include <vector>

@@ -2,7 +2,7 @@
    "Bodies" benchmarks test precomputed bodies (the conflict scan's inner loop); "Configs" ones include
    forward kinematics of both robots, as MultiRobotSpaceInformation::robotsCollide() does. The FCL
    variant runs FCL's narrow phase on the same capsule pairs, for comparison. */
-#include "ompl_parc/CapsuleCollision.h"
+#include "ompl_parc/collision/CapsuleCollision.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 
 #include <benchmark/benchmark.h>

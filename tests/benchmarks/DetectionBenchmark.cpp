@@ -9,10 +9,10 @@
    with more workers returns a larger batch (up to W conflicts), so the table at the end gives, side by side in
    this run, the wall time per call and per conflict found, against W = 1.
    Usage: ompl_parc_bench_detection [--benchmark_filter=REGEX] */
-#include "ompl_parc/BatchDetector.h"
-#include "ompl_parc/InitialPlanner.h"
-#include "ompl_parc/SeededRealVectorSampler.h"
+#include "ompl_parc/arc/BatchDetector.h"
+#include "ompl_parc/arc/InitialPlanner.h"
 #include "ompl_parc/scenarios/PandaCage.h"
+#include "ompl_parc/util/SeededRealVectorSampler.h"
 
 #include <benchmark/benchmark.h>
 #include <ompl/util/Console.h>

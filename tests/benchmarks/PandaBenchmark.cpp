@@ -3,8 +3,9 @@
    pairs of two facing Pandas (the layout of tests/PandaCollisionTest.cpp). "Configs" variants include the
    forward kinematics of both arms; "Placed" ones check precomputed bodies / placed FCL objects, as the
    conflict scan does (it computes each robot's body once per timestep for all its pairs). */
-#include "ompl_parc/CapsuleCollision.h"
-#include "ompl_parc/UrdfFclModel.h"
+#include "ompl_parc/collision/CapsuleCollision.h"
+#include "ompl_parc/robots/BuiltinModels.h"
+#include "ompl_parc/robots/UrdfFclModel.h"
 #include "ompl_parc/scenarios/PandaCage.h"
 
 #include <benchmark/benchmark.h>
@@ -25,7 +26,7 @@ namespace
         PandaPairs()
         {
             const auto load = [](const Eigen::Isometry3d &base) {
-                return std::make_shared<UrdfArm>("panda", nullptr, scenarios::pandaUrdf(), "panda_link0", "panda_link8",
+                return std::make_shared<UrdfArm>("panda", nullptr, models::pandaUrdf(), "panda_link0", "panda_link8",
                                                  base);
             };
             a = load(Eigen::Isometry3d::Identity());

@@ -7,10 +7,10 @@
    time, the median per-stage wall times, the median projected W-core time (P-ARC) and the speedups of medians against
    ARC on the same scenario and seeds. Usage: ompl_parc_bench_planners [--benchmark_filter=REGEX] (the table covers what
    ran). */
-#include "ompl_parc/SolutionValidator.h"
 #include "ompl_parc/planners/ARC.h"
 #include "ompl_parc/planners/ORPARC.h"
 #include "ompl_parc/scenarios/Scenarios.h"
+#include "ompl_parc/validation/SolutionValidator.h"
 
 #include <benchmark/benchmark.h>
 #include <ompl/util/Console.h>

@@ -3,11 +3,11 @@
    settings (range 1, batch 4096, factors 2 and 2, no rewiring) and with k-nearest rewiring. PPSTRRT: the
    PrioritizedSTRRTSolver on the whole of Mobile Cross 4 and 8 (given order). Every iteration uses a new seed;
    counters report the success fraction and the mean arrival (s) or makespan (timesteps). */
-#include "ompl_parc/DynamicObstacles.h"
-#include "ompl_parc/PrioritizedSTRRTSolver.h"
-#include "ompl_parc/SeededRealVectorSampler.h"
 #include "ompl_parc/planners/STRRTstar.h"
+#include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
 #include "ompl_parc/scenarios/Scenarios.h"
+#include "ompl_parc/spacetime/DynamicObstacles.h"
+#include "ompl_parc/util/SeededRealVectorSampler.h"
 
 #include <benchmark/benchmark.h>
 #include <ompl/base/ScopedState.h>

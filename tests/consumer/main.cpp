@@ -1,6 +1,6 @@
 // A user's program against the installed ompl_parc: build a team, check a state, exit 0 on success.
-#include <ompl_parc/DiscRobot.h>
-#include <ompl_parc/MultiRobotSpaceInformation.h>
+#include <ompl_parc/robots/DiscRobot.h>
+#include <ompl_parc/model/MultiRobotSpaceInformation.h>
 #include <ompl_parc/scenarios/Scenarios.h>
 #include <ompl_parc/statespaces/CompositeStateSpace.h>
 

@@ -1,0 +1,76 @@
+#include "ompl_parc/arc/ArcSettings.h"
+
+#include <ompl/util/Exception.h>
+
+#include <cmath>
+
+ompl_parc::ArcSettings ompl_parc::ArcSettings::profile(const std::string &name)
+{
+    ArcSettings s;
+    if (name == "mobile")
+        return s;
+    if (name == "planar" || name == "panda")
+    {
+        s.window = name == "planar" ? 100 : 20;
+        s.growth = Growth::EXPONENTIAL;
+        s.growthStep = 1.05;
+        s.endpointStep = 10;
+        s.boundMargin = 1.;
+        s.minBoundRange = 0.5;
+        s.sampleCap = 50000;
+        return s;
+    }
+    throw ompl::Exception("ArcSettings", "unknown profile '" + name + "' (valid: mobile, planar, panda)");
+}
+
+std::vector<std::string> ompl_parc::ArcSettings::profileNames()
+{
+    return {"mobile", "planar", "panda"};
+}
+
+std::size_t ompl_parc::ArcSettings::halfWidth(unsigned int k) const
+{
+    if (k == 0)
+        return window;
+    const double extra = growth == Growth::LINEAR ? growthStep * k : growthStep * std::pow(2., k - 1.);
+    return window + static_cast<std::size_t>(std::ceil(std::min(extra, 1e15)));
+}
+
+ompl_parc::ArcSettings::Growth ompl_parc::ArcSettings::growthFromString(const std::string &name)
+{
+    if (name == "linear")
+        return Growth::LINEAR;
+    if (name == "exponential")
+        return Growth::EXPONENTIAL;
+    throw ompl::Exception("ArcSettings", "unknown growth '" + name + "' (valid: linear, exponential)");
+}
+
+std::string ompl_parc::ArcSettings::toString(Growth growth)
+{
+    return growth == Growth::LINEAR ? "linear" : "exponential";
+}
+
+ompl_parc::ArcSettings::Solvers ompl_parc::ArcSettings::solversFromString(const std::string &name)
+{
+    if (name == "hierarchy")
+        return Solvers::HIERARCHY;
+    if (name == "composite")
+        return Solvers::COMPOSITE;
+    if (name == "prioritized")
+        return Solvers::PRIORITIZED;
+    throw ompl::Exception("ArcSettings", "unknown solvers '" + name + "' (valid: hierarchy, composite, prioritized)");
+}
+
+std::string ompl_parc::ArcSettings::toString(Solvers solvers)
+{
+    switch (solvers)
+    {
+        case Solvers::HIERARCHY:
+            return "hierarchy";
+        case Solvers::COMPOSITE:
+            return "composite";
+        case Solvers::PRIORITIZED:
+            return "prioritized";
+    }
+    return "";
+}

@@ -1,0 +1,211 @@
+#include "ompl_parc/arc/ConflictDetector.h"
+
+#include "ompl_parc/collision/CapsuleCollision.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace
+{
+    /** Boxes closer than this count as overlapping, so that rounding in the narrow phase can never report
+        a collision the broad phase ruled out. */
+    constexpr double BOX_MARGIN = 1e-9;
+
+    bool boxesOverlap(const std::pair<std::array<double, 3>, std::array<double, 3>> &a,
+                      const std::pair<std::array<double, 3>, std::array<double, 3>> &b)
+    {
+        bool overlap = true;
+        for (int d = 0; d < 3; ++d)
+            overlap = overlap && a.first[d] <= b.second[d] + BOX_MARGIN && b.first[d] <= a.second[d] + BOX_MARGIN;
+        return overlap;
+    }
+}  // namespace
+
+ompl_parc::ConflictDetector::ConflictDetector(const MultiRobotSpaceInformation &si, std::size_t segmentLength)
+    : si_(si),
+      segmentLength_(segmentLength),
+      swept_(si.getRobotCount()),
+      sweptMutex_(new std::mutex[si.getRobotCount()]),
+      robots_(si.getRobotCount())
+{
+    for (std::size_t i = 0; i < robots_; ++i)
+        for (std::size_t j = i + 1; j < robots_; ++j)
+            pairs_.emplace_back(i, j);
+    frontier_.assign(pairs_.size(), 0);
+    allPairs_.resize(pairs_.size());
+    for (std::size_t p = 0; p < pairs_.size(); ++p)
+        allPairs_[p] = p;
+}
+
+void ompl_parc::ConflictDetector::setSegmentLength(std::size_t segmentLength)
+{
+    segmentLength_ = segmentLength;
+    swept_.assign(robots_, SweptBounds());
+}
+
+const ompl_parc::ConflictDetector::SweptBounds &ompl_parc::ConflictDetector::sweptBounds(const MultiRobotPlan &plan,
+                                                                                         std::size_t robot,
+                                                                                         std::size_t last,
+                                                                                         CollisionBody &scratch)
+{
+    std::lock_guard<std::mutex> lock(sweptMutex_[robot]);
+    SweptBounds &bounds = swept_[robot];
+    const Robot &model = *si_.getRobot(robot);
+    const std::size_t arrival = plan.getArrival(robot);
+    const auto boxOf = [&](std::size_t from, std::size_t to)  // timesteps [from, to)
+    {
+        constexpr double INF = std::numeric_limits<double>::infinity();
+        Box box{{INF, INF, INF}, {-INF, -INF, -INF}};
+        for (std::size_t t = from; t < to; ++t)
+        {
+            model.computeBody(plan.getConfig(robot, t), scratch);
+            scratch.expandBox(box.first, box.second);
+        }
+        return box;
+    };
+    if (!bounds.current)  // the path changed: its length (segment count) and final body may have too
+    {
+        bounds.segments.resize(arrival / segmentLength_ + 1);
+        bounds.valid = std::min(bounds.valid, bounds.segments.size());
+        bounds.finalBox = boxOf(arrival, arrival + 1);
+        bounds.current = true;
+    }
+    // Resizing happens only in the first call after an invalidation, before any scan reads the vector;
+    // later calls only write segments at or after `valid`, which no scan has read yet.
+    const std::size_t end = std::min(last + 1, bounds.segments.size());
+    for (; bounds.valid < end; ++bounds.valid)
+    {
+        const std::size_t from = bounds.valid * segmentLength_;
+        bounds.segments[bounds.valid] = boxOf(from, std::min(from + segmentLength_, arrival + 1));
+    }
+    return bounds;
+}
+
+std::optional<ompl_parc::Conflict> ompl_parc::ConflictDetector::findEarliest(const MultiRobotPlan &plan)
+{
+    const auto conflicts = scan(plan, allPairs_, 0, plan.getMakespan() + 1, true);
+    if (conflicts.empty())
+        return std::nullopt;
+    return conflicts.front();
+}
+
+std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRobotPlan &plan,
+                                                                   const std::vector<std::size_t> &pairs,
+                                                                   std::size_t from, std::size_t to,
+                                                                   bool firstTimestepOnly, const PairFilter &skip)
+{
+    // The pairs that still need checking in [from, to): the next timestep each needs, the last one and
+    // the end of the segment its swept bounds were last tested for. Frontiers are tracked here and written
+    // back once at the end, so that workers scanning interleaved pair subsets do not write to shared cache
+    // lines at every timestep.
+    struct Active
+    {
+        std::size_t pair, next, end, boxedUntil;
+    };
+    std::vector<Active> active, finished;
+    std::vector<const SweptBounds *> swept(robots_, nullptr);
+    std::vector<CollisionBody> bodies(robots_);
+    std::size_t t = std::numeric_limits<std::size_t>::max();
+    for (std::size_t p : pairs)
+    {
+        const auto [i, j] = pairs_[p];
+        if (skip && skip(i, j))
+            continue;
+        const std::size_t end = std::min(std::max(plan.getArrival(i), plan.getArrival(j)), to - 1);
+        // A pair whose frontier lies before \e from has a known conflict (or an unchecked gap) there: it
+        // must not be resumed at \e from, which would declare that stretch conflict-free.
+        if (frontier_[p] >= from && frontier_[p] <= end)
+        {
+            active.push_back({p, frontier_[p], end, 0});
+            t = std::min(t, frontier_[p]);
+            if (segmentLength_ > 0)
+                for (std::size_t r : {i, j})
+                    if (swept[r] == nullptr)
+                        swept[r] = &sweptBounds(plan, r, (to - 1) / segmentLength_, bodies[r]);
+        }
+    }
+
+    // Bodies are computed once per robot and timestep, only for robots that some active pair needs.
+    std::vector<std::size_t> stamp(robots_, std::numeric_limits<std::size_t>::max());
+    const auto body = [&](std::size_t robot, std::size_t step) -> const CollisionBody &
+    {
+        if (stamp[robot] != step)
+        {
+            si_.getRobot(robot)->computeBody(plan.getConfig(robot, step), bodies[robot]);
+            stamp[robot] = step;
+        }
+        return bodies[robot];
+    };
+
+    // One pass over the active pairs per timestep that some pair needs; t then jumps to the next such one.
+    std::vector<Conflict> conflicts;
+    while (!active.empty() && !(firstTimestepOnly && !conflicts.empty()))
+    {
+        bool anyDone = false;
+        std::size_t nextT = std::numeric_limits<std::size_t>::max();
+        for (Active &a : active)
+        {
+            const auto [i, j] = pairs_[a.pair];
+            if (a.next == t && segmentLength_ > 0 && t >= a.boxedUntil)
+            {
+                const std::size_t segment = t / segmentLength_;
+                a.boxedUntil = (segment + 1) * segmentLength_;
+                if (!boxesOverlap(boxAt(*swept[i], segment), boxAt(*swept[j], segment)))
+                    a.next = std::min(a.boxedUntil, a.end + 1);  // the whole rest of the segment is clear
+            }
+            if (a.next == t)
+            {
+                if (bodiesCollide(body(i, t), body(j, t)))
+                {
+                    conflicts.push_back({i, j, t});
+                    a.end = t;  // this pair is done: its frontier stays at the conflict
+                }
+                else
+                    a.next = t + 1;
+            }
+            if (a.next <= a.end && a.end > t)
+                nextT = std::min(nextT, a.next);
+            else
+                anyDone = true;
+        }
+        if (anyDone)  // retire finished pairs (rare: keep the per-timestep loop to one pass)
+        {
+            const auto split = std::partition(active.begin(), active.end(),
+                                              [t](const Active &a) { return a.next <= a.end && a.end > t; });
+            finished.insert(finished.end(), split, active.end());
+            active.erase(split, active.end());
+        }
+        t = nextT;
+    }
+    for (const auto *set : {&active, &finished})
+        for (const Active &a : *set)
+            frontier_[a.pair] = a.next;
+    std::sort(conflicts.begin(), conflicts.end());  // retiring pairs reorders them
+    return conflicts;
+}
+
+std::size_t ompl_parc::ConflictDetector::firstUnvalidated(const MultiRobotPlan &plan) const
+{
+    std::size_t first = plan.getMakespan() + 1;
+    for (std::size_t p = 0; p < pairs_.size(); ++p)
+    {
+        const auto [i, j] = pairs_[p];
+        if (frontier_[p] <= std::max(plan.getArrival(i), plan.getArrival(j)))
+            first = std::min(first, frontier_[p]);
+    }
+    return first;
+}
+
+void ompl_parc::ConflictDetector::invalidate(std::size_t robot, std::size_t timestep)
+{
+    for (std::size_t other = 0; other < robots_; ++other)
+        if (other != robot)
+        {
+            auto &f = frontier_[pairIndex(std::min(robot, other), std::max(robot, other))];
+            f = std::min(f, timestep);
+        }
+    SweptBounds &bounds = swept_[robot];
+    bounds.current = false;
+    if (segmentLength_ > 0)
+        bounds.valid = std::min(bounds.valid, timestep / segmentLength_);
+}

@@ -1,0 +1,121 @@
+#ifndef OMPL_PARC_CONFLICT_DETECTOR_
+#define OMPL_PARC_CONFLICT_DETECTOR_
+
+#include "ompl_parc/arc/Conflict.h"
+#include "ompl_parc/collision/CollisionBody.h"
+#include "ompl_parc/model/MultiRobotPlan.h"
+#include "ompl_parc/model/MultiRobotSpaceInformation.h"
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <vector>
+
+namespace ompl_parc
+{
+    /** \brief Finds robot-robot conflicts in a plan, remembering per robot pair how far it is known to be
+        conflict-free (the validated frontier) so that later scans resume there.
+
+        A pair (i, j) needs checking at timesteps 0..max(arrival i, arrival j); after that neither moves.
+        Robots hold their goal after arriving. When a robot's path is patched from timestep t on,
+        invalidate(robot, t) pulls the frontier of each of its pairs back to at most t. scan() examines a
+        subset of pairs over a range of timesteps and is the building block of both the sequential
+        earliest-conflict search (ARC) and the per-worker scans of P-ARC; it only reads the plan and the
+        frontiers of its own pairs, so disjoint pair subsets can be scanned concurrently.
+
+        Broad phase over time: each robot's path is cut into segments of H timesteps ([kH, (k+1)H)), and
+        each segment gets a swept bound, the axis-aligned box around the robot's bodies at all its
+        timesteps (after its arrival a robot keeps the box of its final body). A pair whose two boxes of
+        a segment are disjoint cannot collide anywhere in it, so the scan advances that pair's frontier
+        past the segment without per-timestep checks; the conflicts found are exactly those of the full
+        scan. Swept bounds are computed lazily, per robot under that robot's mutex, by the first scan that
+        needs them, so concurrent scans of disjoint pair subsets (P-ARC's workers) may share robots;
+        invalidate() (called by the coordinator between scans, as for the frontiers) discards the bounds
+        of the segments from the changed timestep on. */
+    class ConflictDetector
+    {
+      public:
+        /** \brief Detector for the team of \e si with swept bounds over \e segmentLength timesteps (0:
+            no broad phase, every timestep of every pair is checked). */
+        explicit ConflictDetector(const MultiRobotSpaceInformation &si,
+                                  std::size_t segmentLength = DEFAULT_SEGMENT_LENGTH);
+
+        /** \brief Default H: long enough to make the box test rare, short enough for tight boxes. */
+        static constexpr std::size_t DEFAULT_SEGMENT_LENGTH = 64;
+
+        /** \brief Change H (0 disables the broad phase); drops all swept bounds. Not during a scan. */
+        void setSegmentLength(std::size_t segmentLength);
+        std::size_t getSegmentLength() const { return segmentLength_; }
+
+        /** \brief The earliest conflict of \e plan over all pairs, ties broken by (first, second); none if
+            the plan is conflict-free. Advances the frontiers of the pairs it validates. */
+        std::optional<Conflict> findEarliest(const MultiRobotPlan &plan);
+
+        /** \brief Which pairs a scan leaves out: skip(i, j) true means pair (i, j) is not checked. */
+        using PairFilter = std::function<bool(std::size_t, std::size_t)>;
+
+        /** \brief Scan \e pairs (indices as by pairIndex()) at timesteps [from, to) in time order, checking at
+            each timestep every pair whose frontier has reached it. With \e firstTimestepOnly (ARC) it stops at
+            the first timestep with a conflict and returns all conflicts there; otherwise (a P-ARC worker) each
+            pair is scanned to its own first conflict or to \e to, and all those first conflicts are returned
+            in (timestep, pair) order. Pairs \e skip rejects are not checked, nor pairs whose frontier is before
+            \e from (they stop at a known conflict). Frontiers of checked pairs advance to their first
+            unchecked or conflicting timestep: a frontier never passes an unchecked or conflicting timestep. */
+        std::vector<Conflict> scan(const MultiRobotPlan &plan, const std::vector<std::size_t> &pairs, std::size_t from,
+                                   std::size_t to, bool firstTimestepOnly, const PairFilter &skip = {});
+
+        /** \brief The first timestep some pair of \e plan still needs checked (makespan + 1 if none). */
+        std::size_t firstUnvalidated(const MultiRobotPlan &plan) const;
+
+        /** \brief Robot \e robot's path changed from timestep \e timestep on: pulls back the frontiers of
+            its pairs and drops its swept bounds from the segment of \e timestep on. Not during a scan. */
+        void invalidate(std::size_t robot, std::size_t timestep);
+
+        /** \brief First timestep of pair (i, j), i < j, not yet known to be conflict-free. */
+        std::size_t getFrontier(std::size_t i, std::size_t j) const { return frontier_[pairIndex(i, j)]; }
+
+        /** \brief Index of pair (i, j), i < j, in the order (0,1), (0,2), ..., (1,2), ... */
+        std::size_t pairIndex(std::size_t i, std::size_t j) const
+        {
+            return i * robots_ - i * (i + 1) / 2 + (j - i - 1);
+        }
+        std::size_t getPairCount() const { return frontier_.size(); }
+        const std::pair<std::size_t, std::size_t> &getPair(std::size_t index) const { return pairs_[index]; }
+
+      private:
+        using Box = std::pair<std::array<double, 3>, std::array<double, 3>>;
+
+        /** \brief One robot's swept bounds: \e segments[k] is valid for k < \e valid; \e finalBox (the
+            body at arrival, used past the last segment) and the segment count while \e current. */
+        struct SweptBounds
+        {
+            std::vector<Box> segments;
+            Box finalBox;
+            std::size_t valid{0};
+            bool current{false};
+        };
+
+        /** \brief Robot \e robot's swept bounds, computed up to segment \e last if missing (thread safe). */
+        const SweptBounds &sweptBounds(const MultiRobotPlan &plan, std::size_t robot, std::size_t last,
+                                       CollisionBody &scratch);
+
+        /** \brief Robot \e robot's bounds at segment \e segment (the final box past its last segment). */
+        static const Box &boxAt(const SweptBounds &bounds, std::size_t segment)
+        {
+            return segment < bounds.segments.size() ? bounds.segments[segment] : bounds.finalBox;
+        }
+
+        const MultiRobotSpaceInformation &si_;
+        std::size_t segmentLength_;
+        std::vector<SweptBounds> swept_;
+        std::unique_ptr<std::mutex[]> sweptMutex_;
+        std::size_t robots_;
+        std::vector<std::size_t> frontier_;
+        std::vector<std::pair<std::size_t, std::size_t>> pairs_;
+        std::vector<std::size_t> allPairs_;
+    };
+}  // namespace ompl_parc
+
+#endif

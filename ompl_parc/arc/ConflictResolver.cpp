@@ -1,0 +1,151 @@
+#include "ompl_parc/arc/ConflictResolver.h"
+
+#include "ompl_parc/util/SeededRealVectorSampler.h"
+
+#include <ompl/util/Exception.h>
+
+#include <algorithm>
+
+namespace ob = ompl::base;
+
+namespace
+{
+    std::size_t latestArrival(const ompl_parc::MultiRobotPlan &plan, const std::vector<std::size_t> &team)
+    {
+        std::size_t latest = 0;
+        for (std::size_t r : team)
+            latest = std::max(latest, plan.getArrival(r));
+        return latest;
+    }
+}  // namespace
+
+ompl_parc::ConflictResolver::ConflictResolver(const MultiRobotSpaceInformation &si, ArcSettings settings,
+                                              std::vector<SubproblemSolverPtr> hierarchy)
+    : si_(si), settings_(settings), hierarchy_(std::move(hierarchy))
+{
+    if (hierarchy_.empty())
+        throw ompl::Exception("ConflictResolver", "needs at least one subproblem solver");
+}
+
+bool ompl_parc::ConflictResolver::teamClear(const MultiRobotPlan &plan, const std::vector<std::size_t> &team,
+                                            std::size_t timestep) const
+{
+    for (std::size_t a = 0; a < team.size(); ++a)
+        for (std::size_t b = a + 1; b < team.size(); ++b)
+            if (si_.robotsCollide(team[a], plan.getConfig(team[a], timestep), team[b],
+                                  plan.getConfig(team[b], timestep)))
+                return false;
+    return true;
+}
+
+void ompl_parc::ConflictResolver::fillEndpoints(const MultiRobotPlan &plan, Subproblem &sub) const
+{
+    sub.starts.clear();
+    sub.goals.clear();
+    for (std::size_t r : sub.robots)
+    {
+        const double *s = plan.getConfig(r, sub.windowStart), *g = plan.getConfig(r, sub.windowEnd);
+        sub.starts.emplace_back(s, s + plan.getDimension(r));
+        sub.goals.emplace_back(g, g + plan.getDimension(r));
+    }
+}
+
+void ompl_parc::ConflictResolver::fillBounds(const MultiRobotPlan &plan, Subproblem &sub) const
+{
+    sub.bounds.clear();
+    for (std::size_t r : sub.robots)
+    {
+        const auto &limits = si_.getRobot(r)->getBounds();
+        const unsigned int dim = plan.getDimension(r);
+        ob::RealVectorBounds b(dim);
+        for (unsigned int d = 0; d < dim; ++d)
+        {
+            double lo = plan.getConfig(r, sub.windowStart)[d], hi = lo;
+            for (std::size_t t = sub.windowStart; t <= sub.windowEnd; ++t)
+            {
+                lo = std::min(lo, plan.getConfig(r, t)[d]);
+                hi = std::max(hi, plan.getConfig(r, t)[d]);
+            }
+            const double pad = settings_.boundMargin * (hi - lo);
+            lo -= pad;
+            hi += pad;
+            const double lack = settings_.minBoundRange - (hi - lo);
+            if (lack > 0.)
+            {
+                lo -= 0.5 * lack;
+                hi += 0.5 * lack;
+            }
+            b.setLow(d, std::max(lo, limits.low[d]));
+            b.setHigh(d, std::min(hi, limits.high[d]));
+        }
+        sub.bounds.push_back(b);
+    }
+}
+
+ompl_parc::Subproblem ompl_parc::ConflictResolver::makeSubproblem(const MultiRobotPlan &plan,
+                                                                  const std::vector<std::size_t> &team,
+                                                                  std::size_t timestep, unsigned int attempt) const
+{
+    Subproblem sub;
+    sub.robots = team;
+    const std::size_t latest = latestArrival(plan, team), h = settings_.halfWidth(attempt);
+    sub.windowStart = timestep > h ? timestep - h : 0;
+    sub.windowEnd = std::min(timestep + h, latest);
+    // Endpoints first: widen an invalid side until the team is clear there (always true at 0 and at the end).
+    const std::size_t step = std::max(1u, settings_.endpointStep);
+    while (sub.windowStart > 0 && !teamClear(plan, team, sub.windowStart))
+        sub.windowStart = sub.windowStart > step ? sub.windowStart - step : 0;
+    while (sub.windowEnd < latest && !teamClear(plan, team, sub.windowEnd))
+        sub.windowEnd = std::min(sub.windowEnd + step, latest);
+    fillEndpoints(plan, sub);
+    fillBounds(plan, sub);
+    sub.sampleCap = settings_.sampleCap;
+    return sub;
+}
+
+ompl_parc::Subproblem ompl_parc::ConflictResolver::makeGlobal(const MultiRobotPlan &plan,
+                                                              const std::vector<std::size_t> &team) const
+{
+    Subproblem sub;
+    sub.robots = team;
+    sub.windowStart = 0;
+    sub.windowEnd = latestArrival(plan, team);
+    fillEndpoints(plan, sub);
+    return sub;
+}
+
+std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(const MultiRobotPlan &plan,
+                                                                      const std::vector<std::size_t> &team,
+                                                                      std::size_t timestep,
+                                                                      const ob::PlannerTerminationCondition &ptc,
+                                                                      std::uint_fast32_t seed) const
+{
+    Repair repair;
+    std::size_t lastStart = 0, lastEnd = 0;
+    for (unsigned int k = 0; !ptc; ++k)
+    {
+        Subproblem sub = repair.global ? makeGlobal(plan, team) : makeSubproblem(plan, team, timestep, k);
+        const bool unchanged = k > 0 && sub.windowStart == lastStart && sub.windowEnd == lastEnd;
+        if (!repair.global && (unchanged || (sub.windowStart == 0 && sub.windowEnd == latestArrival(plan, team))))
+        {
+            repair.global = true;
+            sub = makeGlobal(plan, team);
+        }
+        lastStart = sub.windowStart;
+        lastEnd = sub.windowEnd;
+        repair.expansions = k;
+        for (const auto &solver : hierarchy_)
+        {
+            if (ptc)
+                break;
+            ++repair.attempts;
+            if (solver->solve(si_, sub, ptc, mixSeed(seed, repair.attempts), repair.patch))
+            {
+                repair.subproblem = std::move(sub);
+                repair.solver = solver->getName();
+                return repair;
+            }
+        }
+    }
+    return std::nullopt;
+}

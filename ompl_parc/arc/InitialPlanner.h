@@ -1,0 +1,37 @@
+#ifndef OMPL_PARC_INITIAL_PLANNER_
+#define OMPL_PARC_INITIAL_PLANNER_
+
+#include "ompl_parc/model/MultiRobotProblem.h"
+
+#include <ompl/base/Planner.h>
+#include <ompl/base/PlannerTerminationCondition.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace ompl_parc
+{
+    /** \brief ARC's first stage: a path for one robot alone (static environment only), on the timestep grid.
+
+        Each call plans in a fresh single-robot space seeded by \e seed (so calls are independent, may run
+        concurrently, and repeat exactly), with an OMPL planner from the allocator (RRTConnect by default),
+        then shortcuts the path with OMPL's simplifier (bounded effort, as the authors do). */
+    class InitialPlanner
+    {
+      public:
+        explicit InitialPlanner(const MultiRobotProblem &problem, bool simplify = true,
+                                ompl::base::PlannerAllocator allocator = {});
+
+        /** \brief Plan robot \e robot from its start to its goal; on success fill \e path (flat configs per
+            timestep, from start to goal) and return true; false if \e ptc fired first. */
+        bool plan(std::size_t robot, const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed,
+                  std::vector<double> &path) const;
+
+      private:
+        const MultiRobotProblem &problem_;
+        bool simplify_;
+        ompl::base::PlannerAllocator allocator_;
+    };
+}  // namespace ompl_parc
+
+#endif

@@ -1,0 +1,38 @@
+#ifndef OMPL_PARC_SUBPROBLEM_SOLVER_
+#define OMPL_PARC_SUBPROBLEM_SOLVER_
+
+#include "ompl_parc/arc/Subproblem.h"
+#include "ompl_parc/model/MultiRobotSpaceInformation.h"
+
+#include <ompl/base/PlannerTerminationCondition.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace ompl_parc
+{
+    /** \brief A multi-robot planner for ARC's local subproblems (prioritised ST-RRT, composite RRT-Connect).
+
+        ARC tries solvers in a configurable hierarchy through this interface, and P-ARC calls them from
+        several threads at once: solve() is const and keeps all its state local, and a given \e seed gives
+        the same patch whatever else runs. */
+    class SubproblemSolver
+    {
+      public:
+        virtual ~SubproblemSolver() = default;
+
+        /** \brief A short name for statistics ("pp-st-rrt", "composite-rrtc"). */
+        virtual std::string getName() const = 0;
+
+        /** \brief Solve \e subproblem for the robots of \e si; on success fill \e patch and return true.
+            Returns false (never throws, never blocks past \e ptc) when it gives up. */
+        virtual bool solve(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
+                           const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed,
+                           Patch &patch) const = 0;
+    };
+
+    using SubproblemSolverPtr = std::shared_ptr<const SubproblemSolver>;
+}  // namespace ompl_parc
+
+#endif

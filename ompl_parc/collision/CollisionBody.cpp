@@ -1,0 +1,118 @@
+#include "ompl_parc/collision/CollisionBody.h"
+
+#include <algorithm>
+#include <cmath>
+
+void ompl_parc::CollisionBody::clear()
+{
+    for (auto *v : {&ax_, &ay_, &az_, &bx_, &by_, &bz_, &radius_})
+        v->clear();
+    spheresOnly_ = true;
+}
+
+void ompl_parc::CollisionBody::addCapsule(double ax, double ay, double az, double bx, double by, double bz,
+                                          double radius)
+{
+    ax_.push_back(ax);
+    ay_.push_back(ay);
+    az_.push_back(az);
+    bx_.push_back(bx);
+    by_.push_back(by);
+    bz_.push_back(bz);
+    radius_.push_back(radius);
+    spheresOnly_ = spheresOnly_ && ax == bx && ay == by && az == bz;
+}
+
+void ompl_parc::CollisionBody::resize(std::size_t n, bool spheresOnly)
+{
+    for (auto *v : {&ax_, &ay_, &az_, &bx_, &by_, &bz_, &radius_})
+        v->resize(n);
+    spheresOnly_ = spheresOnly;
+}
+
+void ompl_parc::CollisionBody::updateBound()
+{
+    const std::size_t n = size();
+    for (auto *v : {&sphereX_, &sphereY_, &sphereZ_, &sphereRadius_})
+        v->resize(n);
+    if (n == 0)
+    {
+        centerX_ = centerY_ = centerZ_ = boundRadius_ = 0.;
+        return;
+    }
+    if (n == 1 && spheresOnly_)  // a disc or a single sphere bounds itself (the common 2D case: keep it cheap)
+    {
+        sphereX_[0] = centerX_ = ax_[0];
+        sphereY_[0] = centerY_ = ay_[0];
+        sphereZ_[0] = centerZ_ = az_[0];
+        sphereRadius_[0] = boundRadius_ = radius_[0];
+        return;
+    }
+    // Restricted plain pointers: distinct vectors never alias, which the compiler cannot prove by itself
+    // (without it the loops stay scalar).
+    const double *__restrict ax = ax_.data(), *__restrict ay = ay_.data(), *__restrict az = az_.data();
+    const double *__restrict bx = bx_.data(), *__restrict by = by_.data(), *__restrict bz = bz_.data();
+    const double *__restrict r = radius_.data();
+    double *__restrict sx = sphereX_.data(), *__restrict sy = sphereY_.data(), *__restrict sz = sphereZ_.data();
+    double *__restrict sr = sphereRadius_.data();
+    for (std::size_t i = 0; i < n; ++i)  // capsule spheres: a pure map
+    {
+        const double dx = bx[i] - ax[i], dy = by[i] - ay[i], dz = bz[i] - az[i];
+        sx[i] = 0.5 * (ax[i] + bx[i]);
+        sy[i] = 0.5 * (ay[i] + by[i]);
+        sz[i] = 0.5 * (az[i] + bz[i]);
+        sr[i] = 0.5 * std::sqrt(dx * dx + dy * dy + dz * dz) + r[i];
+    }
+
+    // Centre of the axis-aligned box around all capsule axes; then the farthest capsule surface, per chunk
+    // a map of distances into a small buffer (vectorised square roots) and a scalar maximum of it.
+    double lo[3] = {ax[0], ay[0], az[0]}, hi[3] = {ax[0], ay[0], az[0]};
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        lo[0] = std::min(lo[0], std::min(ax[i], bx[i]));
+        hi[0] = std::max(hi[0], std::max(ax[i], bx[i]));
+        lo[1] = std::min(lo[1], std::min(ay[i], by[i]));
+        hi[1] = std::max(hi[1], std::max(ay[i], by[i]));
+        lo[2] = std::min(lo[2], std::min(az[i], bz[i]));
+        hi[2] = std::max(hi[2], std::max(az[i], bz[i]));
+    }
+    const double cx = 0.5 * (lo[0] + hi[0]), cy = 0.5 * (lo[1] + hi[1]), cz = 0.5 * (lo[2] + hi[2]);
+    constexpr std::size_t CHUNK = 16;
+    double far[CHUNK], radius = 0.;
+    for (std::size_t base = 0; base < n; base += CHUNK)
+    {
+        const std::size_t m = std::min(CHUNK, n - base);
+        for (std::size_t k = 0; k < m; ++k)
+        {
+            const std::size_t i = base + k;
+            const double dax = ax[i] - cx, day = ay[i] - cy, daz = az[i] - cz;
+            const double dbx = bx[i] - cx, dby = by[i] - cy, dbz = bz[i] - cz;
+            far[k] = std::sqrt(std::max(dax * dax + day * day + daz * daz, dbx * dbx + dby * dby + dbz * dbz)) + r[i];
+        }
+        for (std::size_t k = 0; k < m; ++k)
+            radius = std::max(radius, far[k]);
+    }
+    centerX_ = cx;
+    centerY_ = cy;
+    centerZ_ = cz;
+    boundRadius_ = radius;
+}
+
+void ompl_parc::CollisionBody::expandBox(std::array<double, 3> &lo, std::array<double, 3> &hi) const
+{
+    // One min/max reduction per coordinate over plain arrays: vectorises.
+    const std::vector<double> *a[3] = {&ax_, &ay_, &az_}, *b[3] = {&bx_, &by_, &bz_};
+    const double *r = radius_.data();
+    for (int d = 0; d < 3; ++d)
+    {
+        const double *pa = a[d]->data(), *pb = b[d]->data();
+        double l = lo[d], h = hi[d];
+        for (std::size_t i = 0; i < size(); ++i)
+        {
+            l = std::min(l, std::min(pa[i], pb[i]) - r[i]);
+            h = std::max(h, std::max(pa[i], pb[i]) + r[i]);
+        }
+        lo[d] = l;
+        hi[d] = h;
+    }
+}

@@ -1,0 +1,95 @@
+#include "ompl_parc/collision/Environment.h"
+
+#include <fcl/geometry/shape/box.h>
+#include <fcl/geometry/shape/capsule.h>
+#include <fcl/geometry/shape/cylinder.h>
+#include <fcl/geometry/shape/sphere.h>
+#include <fcl/narrowphase/collision.h>
+#include <ompl/util/Exception.h>
+
+namespace
+{
+    bool positiveSize(const ompl_parc::Obstacle &o)
+    {
+        using Shape = ompl_parc::Obstacle::Shape;
+        if (o.shape == Shape::BOX)
+            return (o.size.array() > 0.).all();
+        if (o.shape == Shape::SPHERE)
+            return o.size.x() > 0.;
+        return o.size.x() > 0. && o.size.z() > 0.;
+    }
+}  // namespace
+
+std::shared_ptr<fcl::CollisionGeometryd> ompl_parc::Environment::createGeometry(const Obstacle &o)
+{
+    using Shape = Obstacle::Shape;
+    switch (o.shape)
+    {
+        case Shape::BOX:
+            return std::make_shared<fcl::Boxd>(o.size.x(), o.size.y(), o.size.z());
+        case Shape::SPHERE:
+            return std::make_shared<fcl::Sphered>(o.size.x());
+        case Shape::CYLINDER:
+            return std::make_shared<fcl::Cylinderd>(o.size.x(), o.size.z());
+    }
+    return nullptr;
+}
+
+void ompl_parc::Environment::addObstacle(const Obstacle &obstacle)
+{
+    if (!positiveSize(obstacle))
+        throw ompl::Exception("Environment", "obstacle '" + obstacle.name + "' has a non-positive size");
+    auto object = std::make_shared<fcl::CollisionObjectd>(createGeometry(obstacle), obstacle.pose);
+    object->computeAABB();
+    obstacles_.push_back(obstacle);
+    objects_.push_back(std::move(object));
+}
+
+void ompl_parc::Environment::addBox2D(const std::string &name, double centerX, double centerY, double sizeX,
+                                      double sizeY, double yaw)
+{
+    Obstacle o;
+    o.name = name;
+    o.shape = Obstacle::Shape::BOX;
+    o.size = Eigen::Vector3d(sizeX, sizeY, 2.);
+    o.pose = Eigen::Translation3d(centerX, centerY, 0.) * Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ());
+    addObstacle(o);
+}
+
+bool ompl_parc::Environment::collides(const CollisionBody &body) const
+{
+    if (objects_.empty())
+        return false;
+    for (std::size_t i = 0; i < body.size(); ++i)
+        if (findCollision(body, i) != nullptr)
+            return true;
+    return false;
+}
+
+const ompl_parc::Obstacle *ompl_parc::Environment::findCollision(const CollisionBody &body, std::size_t i) const
+{
+    const Eigen::Vector3d a(body.ax_[i], body.ay_[i], body.az_[i]), b(body.bx_[i], body.by_[i], body.bz_[i]);
+    const double r = body.radius_[i];
+    const fcl::AABBd box(a.cwiseMin(b) - Eigen::Vector3d::Constant(r), a.cwiseMax(b) + Eigen::Vector3d::Constant(r));
+    const Eigen::Vector3d axis = b - a;
+    const double length = axis.norm();
+    fcl::Transform3d tf = fcl::Transform3d::Identity();
+    tf.translation() = 0.5 * (a + b);
+    if (length > 0.)
+        tf.linear() = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), axis).toRotationMatrix();
+    const fcl::Capsuled capsule(r, length);
+    const fcl::Sphered sphere(r);
+    const fcl::CollisionGeometryd *geometry = length > 0. ? static_cast<const fcl::CollisionGeometryd *>(&capsule)
+                                                          : static_cast<const fcl::CollisionGeometryd *>(&sphere);
+    const fcl::CollisionRequestd request;
+    for (std::size_t k = 0; k < objects_.size(); ++k)
+    {
+        const auto &object = objects_[k];
+        if (!object->getAABB().overlap(box))
+            continue;
+        fcl::CollisionResultd result;
+        if (fcl::collide(geometry, tf, object->collisionGeometry().get(), object->getTransform(), request, result) > 0)
+            return &obstacles_[k];
+    }
+    return nullptr;
+}

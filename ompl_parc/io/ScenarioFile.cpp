@@ -1,0 +1,484 @@
+#include "ompl_parc/io/ScenarioFile.h"
+
+#include "ompl_parc/robots/BuiltinModels.h"
+#include "ompl_parc/robots/DiscRobot.h"
+#include "ompl_parc/robots/PlanarArm.h"
+#include "ompl_parc/robots/UrdfArm.h"
+
+#include <nlohmann/json.hpp>
+#include <ompl/util/Exception.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+using nlohmann::json;
+using nlohmann::ordered_json;  // written files keep their fields in a readable order
+
+namespace
+{
+    const char *const FORMAT = "ompl_parc.scenario";
+    constexpr int VERSION = 1;
+    constexpr double DEFAULT_RESOLUTION = 128.;
+
+    [[noreturn]] void fail(const std::string &what)
+    {
+        throw ompl::Exception("ScenarioFile", what);
+    }
+
+    /** Checked access to one JSON document: every helper names the field it looks at in its error. */
+    const json &field(const json &object, const std::string &key, const std::string &where)
+    {
+        if (!object.contains(key))
+            fail(where + ": missing field '" + key + "'");
+        return object.at(key);
+    }
+
+    std::string member(const std::string &where, const std::string &key)
+    {
+        return where.empty() ? key : where + "." + key;
+    }
+
+    void requireObject(const json &value, const std::string &where)
+    {
+        if (!value.is_object())
+            fail(where + " must be an object");
+    }
+
+    /** Rejects fields outside \e allowed, so a misspelt optional field is not silently ignored. */
+    void allowOnly(const json &object, const std::set<std::string> &allowed, const std::string &where)
+    {
+        for (const auto &entry : object.items())
+            if (allowed.count(entry.key()) == 0)
+                fail(where + ": unknown field '" + entry.key() + "'");
+    }
+
+    double number(const json &value, const std::string &where, bool positive = false)
+    {
+        if (!value.is_number() || !std::isfinite(value.get<double>()) || (positive && !(value.get<double>() > 0.)))
+            fail(where + (positive ? " must be a positive number" : " must be a finite number"));
+        return value.get<double>();
+    }
+
+    /** An array of \e count finite numbers (any non-zero count if \e count is 0). */
+    std::vector<double> numbers(const json &value, const std::string &where, std::size_t count)
+    {
+        if (!value.is_array() || (count != 0 && value.size() != count) || value.empty())
+            fail(where + " must be an array of " + (count != 0 ? std::to_string(count) : std::string("some")) +
+                 " numbers");
+        std::vector<double> out;
+        for (std::size_t i = 0; i < value.size(); ++i)
+            out.push_back(number(value[i], where + "[" + std::to_string(i) + "]"));
+        return out;
+    }
+
+    double optionalNumber(const json &object, const std::string &key, double fallback, const std::string &where)
+    {
+        return object.contains(key) ? number(object.at(key), member(where, key)) : fallback;
+    }
+
+    void requirePositive(const std::vector<double> &values, const std::string &where)
+    {
+        for (std::size_t i = 0; i < values.size(); ++i)
+            if (!(values[i] > 0.))
+                fail(where + "[" + std::to_string(i) + "] must be a positive number");
+    }
+
+    std::string nonEmptyString(const json &value, const std::string &where)
+    {
+        if (!value.is_string() || value.get<std::string>().empty())
+            fail(where + " must be a non-empty string");
+        return value.get<std::string>();
+    }
+
+    /** {"low": [...], "high": [...]} with \e count entries each and low < high. */
+    ompl::base::RealVectorBounds bounds(const json &value, const std::string &where, std::size_t count)
+    {
+        requireObject(value, where);
+        allowOnly(value, {"low", "high"}, where);
+        const auto low = numbers(field(value, "low", where), where + ".low", count);
+        const auto high = numbers(field(value, "high", where), where + ".high", count);
+        ompl::base::RealVectorBounds out(count);
+        for (std::size_t d = 0; d < count; ++d)
+        {
+            if (!(low[d] < high[d]))
+                fail(where + ".low[" + std::to_string(d) + "] must be below " + where + ".high[" + std::to_string(d) +
+                     "]");
+            out.setLow(d, low[d]);
+            out.setHigh(d, high[d]);
+        }
+        return out;
+    }
+
+    ordered_json boundsToJson(const ompl::base::RealVectorBounds &b)
+    {
+        return {{"low", b.low}, {"high", b.high}};
+    }
+
+    /** The yaw of a box2d footprint if \e o is one (a box spanning z in [-1, 1] turned about z only). */
+    bool asBox2D(const ompl_parc::Obstacle &o, double &yaw)
+    {
+        if (o.shape != ompl_parc::Obstacle::Shape::BOX || o.size.z() != 2. || o.pose.translation().z() != 0.)
+            return false;
+        const Eigen::Matrix3d r = o.pose.rotation();
+        yaw = std::atan2(r(1, 0), r(0, 0));
+        return r.isApprox(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix(), 1e-12);
+    }
+
+    /** "position" [x, y, z] and "orientation" quaternion [w, x, y, z] of an object (both optional). */
+    Eigen::Isometry3d poseFromJson(const json &value, const std::string &where)
+    {
+        const auto p = value.contains("position") ? numbers(value.at("position"), where + ".position", 3)
+                                                  : std::vector<double>{0., 0., 0.};
+        const auto q = value.contains("orientation") ? numbers(value.at("orientation"), where + ".orientation", 4)
+                                                     : std::vector<double>{1., 0., 0., 0.};
+        Eigen::Quaterniond rotation(q[0], q[1], q[2], q[3]);
+        if (!(rotation.norm() > 1e-9))
+            fail(where + ".orientation must be a non-zero quaternion [w, x, y, z]");
+        return Eigen::Translation3d(p[0], p[1], p[2]) * rotation.normalized();
+    }
+
+    ordered_json poseToJson(const Eigen::Isometry3d &pose)
+    {
+        const Eigen::Vector3d p = pose.translation();
+        const Eigen::Quaterniond q(pose.rotation());
+        return {{"position", {p.x(), p.y(), p.z()}}, {"orientation", {q.w(), q.x(), q.y(), q.z()}}};
+    }
+
+    ordered_json obstacleToJson(const ompl_parc::Obstacle &o)
+    {
+        using Shape = ompl_parc::Obstacle::Shape;
+        const Eigen::Vector3d p = o.pose.translation();
+        double yaw = 0.;
+        if (asBox2D(o, yaw))
+            return {{"name", o.name},
+                    {"shape", "box2d"},
+                    {"center", {p.x(), p.y()}},
+                    {"size", {o.size.x(), o.size.y()}},
+                    {"yaw", yaw}};
+        ordered_json out = {{"name", o.name}};
+        switch (o.shape)
+        {
+            case Shape::BOX:
+                out["shape"] = "box";
+                out["size"] = {o.size.x(), o.size.y(), o.size.z()};
+                break;
+            case Shape::SPHERE:
+                out["shape"] = "sphere";
+                out["radius"] = o.size.x();
+                break;
+            case Shape::CYLINDER:
+                out["shape"] = "cylinder";
+                out["radius"] = o.size.x();
+                out["length"] = o.size.z();
+                break;
+        }
+        out.update(poseToJson(o.pose));
+        return out;
+    }
+
+    /** Parse obstacle \e value (at \e where, index \e index) into \e environment. */
+    void addObstacle(const json &value, const std::string &where, std::size_t index,
+                     ompl_parc::Environment &environment)
+    {
+        using Shape = ompl_parc::Obstacle::Shape;
+        requireObject(value, where);
+        const std::string shape = nonEmptyString(field(value, "shape", where), where + ".shape");
+        const std::string name = value.contains("name") ? nonEmptyString(value.at("name"), where + ".name")
+                                                        : "obstacle" + std::to_string(index);
+        if (shape == "box2d")
+        {
+            allowOnly(value, {"name", "shape", "center", "size", "yaw"}, where);
+            const auto center = numbers(field(value, "center", where), where + ".center", 2);
+            const auto size = numbers(field(value, "size", where), where + ".size", 2);
+            requirePositive(size, where + ".size");
+            environment.addBox2D(name, center[0], center[1], size[0], size[1], optionalNumber(value, "yaw", 0., where));
+            return;
+        }
+        ompl_parc::Obstacle o;
+        o.name = name;
+        if (shape == "box")
+        {
+            allowOnly(value, {"name", "shape", "size", "position", "orientation"}, where);
+            const auto size = numbers(field(value, "size", where), where + ".size", 3);
+            requirePositive(size, where + ".size");
+            o.size = Eigen::Vector3d(size[0], size[1], size[2]);
+            o.shape = Shape::BOX;
+        }
+        else if (shape == "sphere")
+        {
+            allowOnly(value, {"name", "shape", "radius", "position", "orientation"}, where);
+            o.size.x() = number(field(value, "radius", where), where + ".radius", true);
+            o.shape = Shape::SPHERE;
+        }
+        else if (shape == "cylinder")
+        {
+            allowOnly(value, {"name", "shape", "radius", "length", "position", "orientation"}, where);
+            o.size.x() = number(field(value, "radius", where), where + ".radius", true);
+            o.size.z() = number(field(value, "length", where), where + ".length", true);
+            o.shape = Shape::CYLINDER;
+        }
+        else
+            fail(where + ".shape must be one of box, box2d, sphere, cylinder (got '" + shape + "')");
+
+        o.pose = poseFromJson(value, where);
+        environment.addObstacle(o);
+    }
+
+    ordered_json robotToJson(const ompl_parc::Robot &robot)
+    {
+        ordered_json out = {{"name", robot.getName()}, {"kind", robot.getKind()}};
+        if (const auto *disc = dynamic_cast<const ompl_parc::DiscRobot *>(&robot))
+        {
+            out["radius"] = disc->getRadius();
+            out["bounds"] = boundsToJson(disc->getBounds());
+        }
+        else if (const auto *arm = dynamic_cast<const ompl_parc::PlanarArm *>(&robot))
+        {
+            out["base"] = {{"x", arm->getBaseX()}, {"y", arm->getBaseY()}, {"yaw", arm->getBaseYaw()}};
+            out["link_lengths"] = arm->getLinkLengths();
+            out["link_width"] = arm->getLinkWidth();
+            out["joint_limits"] = boundsToJson(arm->getBounds());
+        }
+        else if (const auto *urdf = dynamic_cast<const ompl_parc::UrdfArm *>(&robot))
+        {
+            // A built-in model by name, anything else inline: either way the file stays self-contained.
+            const auto &models = ompl_parc::models::builtinUrdfs();
+            const auto builtin = std::find_if(models.begin(), models.end(),
+                                              [&](const auto &model) { return model.second() == urdf->getUrdfXml(); });
+            if (builtin != models.end())
+                out["builtin_urdf"] = builtin->first;
+            else
+                out["urdf"] = urdf->getUrdfXml();
+            out["base_link"] = urdf->getBaseLink();
+            out["tip_link"] = urdf->getTipLink();
+            out["base_pose"] = poseToJson(urdf->getBasePose());
+        }
+        else
+            fail("robot '" + robot.getName() + "' of kind '" + robot.getKind() + "' cannot be written");
+        return out;
+    }
+
+    /** The URDF text of urdf_arm \e value: inline ("urdf"), a built-in model ("builtin_urdf") or a file
+        ("urdf_file", relative paths from \e folder, the scenario file's folder). */
+    std::string urdfFromJson(const json &value, const std::string &where, const std::string &folder)
+    {
+        if (value.contains("urdf") + value.contains("builtin_urdf") + value.contains("urdf_file") != 1)
+            fail(where +
+                 " needs exactly one of 'urdf' (the XML), 'builtin_urdf' (a model's name) or 'urdf_file' "
+                 "(a path)");
+        if (value.contains("urdf"))
+            return nonEmptyString(value.at("urdf"), where + ".urdf");
+        if (value.contains("builtin_urdf"))
+        {
+            const std::string model = nonEmptyString(value.at("builtin_urdf"), where + ".builtin_urdf");
+            const auto it = ompl_parc::models::builtinUrdfs().find(model);
+            if (it == ompl_parc::models::builtinUrdfs().end())
+            {
+                std::string valid;
+                for (const auto &entry : ompl_parc::models::builtinUrdfs())
+                    valid += (valid.empty() ? "" : ", ") + entry.first;
+                fail(where + ".builtin_urdf must be one of " + valid + " (got '" + model + "')");
+            }
+            return it->second();
+        }
+        const std::filesystem::path file = nonEmptyString(value.at("urdf_file"), where + ".urdf_file");
+        return ompl_parc::UrdfArm::readFile(
+            (file.is_relative() ? std::filesystem::path(folder) / file : file).string());
+    }
+
+    /** The robot described by \e value; its start and goal go to \e start and \e goal. */
+    ompl_parc::RobotPtr robotFromJson(const json &value, const std::string &where,
+                                      const ompl_parc::EnvironmentPtr &environment, const std::string &folder,
+                                      std::vector<double> &start, std::vector<double> &goal)
+    {
+        requireObject(value, where);
+        const std::string name = nonEmptyString(field(value, "name", where), where + ".name");
+        const std::string kind = nonEmptyString(field(value, "kind", where), where + ".kind");
+        ompl_parc::RobotPtr robot;
+        if (kind == "disc")
+        {
+            allowOnly(value, {"name", "kind", "radius", "bounds", "start", "goal"}, where);
+            const double radius = number(field(value, "radius", where), where + ".radius", true);
+            robot = std::make_shared<ompl_parc::DiscRobot>(name, environment, radius,
+                                                           bounds(field(value, "bounds", where), where + ".bounds", 2));
+        }
+        else if (kind == "planar_arm")
+        {
+            allowOnly(value, {"name", "kind", "base", "link_lengths", "link_width", "joint_limits", "start", "goal"},
+                      where);
+            const json &base = field(value, "base", where);
+            requireObject(base, where + ".base");
+            allowOnly(base, {"x", "y", "yaw"}, where + ".base");
+            const auto links = numbers(field(value, "link_lengths", where), where + ".link_lengths", 0);
+            requirePositive(links, where + ".link_lengths");
+            const double width = number(field(value, "link_width", where), where + ".link_width", true);
+            robot = std::make_shared<ompl_parc::PlanarArm>(
+                name, environment, number(field(base, "x", where + ".base"), where + ".base.x"),
+                number(field(base, "y", where + ".base"), where + ".base.y"),
+                optionalNumber(base, "yaw", 0., where + ".base"), links, width,
+                bounds(field(value, "joint_limits", where), where + ".joint_limits", links.size()));
+        }
+        else if (kind == "urdf_arm")
+        {
+            // The URDF, the chain's end links, and the base pose ("base_pose": position and orientation).
+            allowOnly(value,
+                      {"name", "kind", "urdf", "builtin_urdf", "urdf_file", "base_link", "tip_link", "base_pose",
+                       "start", "goal"},
+                      where);
+            const std::string xml = urdfFromJson(value, where, folder);
+            Eigen::Isometry3d base = Eigen::Isometry3d::Identity();
+            if (value.contains("base_pose"))
+            {
+                requireObject(value.at("base_pose"), where + ".base_pose");
+                allowOnly(value.at("base_pose"), {"position", "orientation"}, where + ".base_pose");
+                base = poseFromJson(value.at("base_pose"), where + ".base_pose");
+            }
+            robot = std::make_shared<ompl_parc::UrdfArm>(
+                name, environment, xml, nonEmptyString(field(value, "base_link", where), where + ".base_link"),
+                nonEmptyString(field(value, "tip_link", where), where + ".tip_link"), base);
+        }
+        else
+            fail(where + ".kind must be one of disc, planar_arm, urdf_arm (got '" + kind + "')");
+        start = numbers(field(value, "start", where), where + ".start", robot->getDimension());
+        goal = numbers(field(value, "goal", where), where + ".goal", robot->getDimension());
+        return robot;
+    }
+
+    /** \e doc with one line per top-level field and per obstacle and robot, as in the hand-written examples:
+        compact, and a diff shows which robot changed. */
+    std::string layOut(const ordered_json &doc)
+    {
+        std::string out = "{";
+        for (const auto &field : doc.items())
+        {
+            out += (out.size() == 1 ? "\n  " : ",\n  ") + ordered_json(field.key()).dump() + ": ";
+            const ordered_json &value = field.value();
+            if (!value.is_array() || value.empty() || !value.front().is_object())
+            {
+                out += value.dump();
+                continue;
+            }
+            for (std::size_t i = 0; i < value.size(); ++i)
+                out += (i == 0 ? "[\n    " : ",\n    ") + value[i].dump();
+            out += "\n  ]";
+        }
+        return out + "\n}";
+    }
+
+    /** "at line L, column C: ..." of a nlohmann parse error, without its "[json.exception...] " prefix. */
+    std::string syntaxError(const json::parse_error &e)
+    {
+        std::string what = e.what();
+        const auto at = what.find(" at line ");
+        return (at == std::string::npos ? what : what.substr(at + 1)) + " (byte " + std::to_string(e.byte) + ")";
+    }
+}  // namespace
+
+std::string ompl_parc::ScenarioFile::toJson(const MultiRobotProblem &problem)
+{
+    const auto &si = *problem.getSpaceInformation();
+    const EnvironmentPtr &environment = si.getRobot(0)->getEnvironment();
+    ordered_json obstacles = ordered_json::array();
+    for (const auto &o : environment->getObstacles())
+        obstacles.push_back(obstacleToJson(o));
+    ordered_json robots = ordered_json::array();
+    for (std::size_t i = 0; i < si.getRobotCount(); ++i)
+    {
+        const Robot &robot = *si.getRobot(i);
+        if (robot.getEnvironment() != environment)
+            fail("robot '" + robot.getName() + "' has an Environment of its own; a scenario file has one");
+        ordered_json entry = robotToJson(robot);
+        entry["start"] = problem.getStart(i);
+        entry["goal"] = problem.getGoal(i);
+        robots.push_back(std::move(entry));
+    }
+    const ordered_json doc = {{"format", FORMAT},
+                              {"version", VERSION},
+                              {"name", problem.getName()},
+                              {"resolution", si.getResolution()},
+                              {"obstacles", std::move(obstacles)},
+                              {"robots", std::move(robots)}};
+    return layOut(doc);
+}
+
+void ompl_parc::ScenarioFile::write(const std::string &path, const MultiRobotProblem &problem)
+{
+    const std::string text = toJson(problem);
+    std::ofstream out(path);
+    if (!out)
+        fail("cannot write '" + path + "'");
+    out << text << '\n';
+    if (!out)
+        fail("error writing '" + path + "'");
+}
+
+ompl_parc::MultiRobotProblem ompl_parc::ScenarioFile::read(const std::string &path)
+{
+    std::ifstream in(path);
+    if (!in)
+        fail("cannot open '" + path + "'");
+    std::stringstream text;
+    text << in.rdbuf();
+    return fromJson(text.str(), std::filesystem::path(path).parent_path().string());
+}
+
+ompl_parc::MultiRobotProblem ompl_parc::ScenarioFile::fromJson(const std::string &text, const std::string &folder)
+{
+    json doc;
+    try
+    {
+        doc = json::parse(text);
+    }
+    catch (const json::parse_error &e)
+    {
+        fail("not valid JSON " + syntaxError(e));
+    }
+    requireObject(doc, "the scenario");
+    allowOnly(doc, {"format", "version", "name", "resolution", "obstacles", "robots"}, "scenario");
+    const json &format = field(doc, "format", "scenario");
+    if (!format.is_string() || format.get<std::string>() != FORMAT)
+        fail("'format' must be \"" + std::string(FORMAT) + "\"");
+    const json &version = field(doc, "version", "scenario");
+    if (!version.is_number_integer() || version.get<int>() != VERSION)
+        fail("unsupported 'version' (this build reads version " + std::to_string(VERSION) + ")");
+    const std::string name = nonEmptyString(field(doc, "name", "scenario"), "name");
+    const double resolution =
+        doc.contains("resolution") ? number(doc.at("resolution"), "resolution", true) : DEFAULT_RESOLUTION;
+
+    auto environment = std::make_shared<Environment>();
+    if (doc.contains("obstacles"))
+    {
+        const json &obstacles = doc.at("obstacles");
+        if (!obstacles.is_array())
+            fail("obstacles must be an array");
+        for (std::size_t i = 0; i < obstacles.size(); ++i)
+            addObstacle(obstacles[i], "obstacles[" + std::to_string(i) + "]", i, *environment);
+    }
+
+    const json &robots = field(doc, "robots", "scenario");
+    if (!robots.is_array() || robots.empty())
+        fail("robots must be a non-empty array");
+    std::vector<RobotPtr> team;
+    std::vector<std::vector<double>> starts(robots.size()), goals(robots.size());
+    std::map<std::string, std::size_t> names;
+    for (std::size_t i = 0; i < robots.size(); ++i)
+    {
+        const std::string where = "robots[" + std::to_string(i) + "]";
+        team.push_back(robotFromJson(robots[i], where, environment, folder, starts[i], goals[i]));
+        const auto [previous, fresh] = names.emplace(team.back()->getName(), i);
+        if (!fresh)
+            fail(where + ".name '" + team.back()->getName() + "' is already used by robots[" +
+                 std::to_string(previous->second) + "]");
+    }
+    MultiRobotProblem problem(std::make_shared<MultiRobotSpaceInformation>(team, resolution), std::move(starts),
+                              std::move(goals), name);
+    const std::string reason = problem.checkEndpoints();
+    if (!reason.empty())
+        fail(reason);
+    return problem;
+}

@@ -1,0 +1,128 @@
+#include "ompl_parc/model/MultiRobotSpaceInformation.h"
+
+#include "ompl_parc/collision/CapsuleCollision.h"
+#include "ompl_parc/model/MultiRobotValidityChecker.h"
+#include "ompl_parc/util/SeededRealVectorSampler.h"
+
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/util/Exception.h>
+
+#include <set>
+
+namespace ob = ompl::base;
+
+namespace
+{
+    void checkTeam(const std::vector<ompl_parc::RobotPtr> &robots)
+    {
+        if (robots.empty())
+            throw ompl::Exception("MultiRobotSpaceInformation", "a team needs at least one robot");
+        std::set<std::string> names;
+        for (const auto &robot : robots)
+        {
+            if (!robot)
+                throw ompl::Exception("MultiRobotSpaceInformation", "null robot in the team");
+            if (robot->getEnvironment() != robots.front()->getEnvironment())
+                throw ompl::Exception("MultiRobotSpaceInformation",
+                                      "robot '" + robot->getName() + "' lives in another Environment than the team");
+            if (!names.insert(robot->getName()).second)
+                throw ompl::Exception("MultiRobotSpaceInformation", "duplicate robot name '" + robot->getName() + "'");
+        }
+    }
+
+    /** Fresh robot spaces: the given (or the robots' own) bounds, one motion check per timestep, and
+        samplers seeded from \e seed when it is non-zero. */
+    std::vector<ob::StateSpacePtr> robotSpaces(const std::vector<ompl_parc::RobotPtr> &robots, double resolution,
+                                               const std::vector<ob::RealVectorBounds> &bounds, std::uint_fast32_t seed)
+    {
+        checkTeam(robots);
+        if (!(resolution > 0.))
+            throw ompl::Exception("MultiRobotSpaceInformation", "resolution must be positive");
+        if (!bounds.empty() && bounds.size() != robots.size())
+            throw ompl::Exception("MultiRobotSpaceInformation", "need one bounds entry per robot");
+        std::vector<ob::StateSpacePtr> spaces;
+        for (std::size_t i = 0; i < robots.size(); ++i)
+        {
+            const auto &robot = *robots[i];
+            const ob::RealVectorBounds &b = bounds.empty() ? robot.getBounds() : bounds[i];
+            if (b.low.size() != robot.getDimension() || b.high.size() != robot.getDimension())
+                throw ompl::Exception("MultiRobotSpaceInformation",
+                                      "bounds of robot '" + robot.getName() + "' have the wrong dimension");
+            for (unsigned int d = 0; d < robot.getDimension(); ++d)
+                if (!(b.low[d] < b.high[d]))
+                    throw ompl::Exception(
+                        "MultiRobotSpaceInformation",
+                        "bounds of robot '" + robot.getName() + "' are empty in dimension " + std::to_string(d));
+            auto space = std::make_shared<ob::RealVectorStateSpace>(robot.getDimension());
+            space->setBounds(b);
+            space->setName(robot.getName());
+            space->setLongestValidSegmentFraction(std::min(0.5, 1. / (resolution * space->getMaximumExtent())));
+            if (seed != 0)
+                space->setStateSamplerAllocator(
+                    ompl_parc::SeededRealVectorSampler::allocator(ompl_parc::mixSeed(seed, i)));
+            spaces.push_back(space);
+        }
+        return spaces;
+    }
+}  // namespace
+
+ompl_parc::MultiRobotSpaceInformation::MultiRobotSpaceInformation(std::vector<RobotPtr> robots, double resolution,
+                                                                  const std::vector<ob::RealVectorBounds> &bounds,
+                                                                  std::uint_fast32_t seed)
+    : ob::SpaceInformation(std::make_shared<CompositeStateSpace>(robotSpaces(robots, resolution, bounds, seed))),
+      robots_(std::move(robots)),
+      composite_(std::static_pointer_cast<CompositeStateSpace>(getStateSpace())),
+      resolution_(resolution)
+{
+    setStateValidityChecker(std::make_shared<MultiRobotValidityChecker>(this, robots_));
+    setup();
+}
+
+const double *ompl_parc::MultiRobotSpaceInformation::getRobotValues(const ob::State *state, std::size_t i) const
+{
+    return state->as<ob::CompoundState>()
+        ->as<ob::RealVectorStateSpace::StateType>(static_cast<unsigned int>(i))
+        ->values;
+}
+
+double *ompl_parc::MultiRobotSpaceInformation::getRobotValues(ob::State *state, std::size_t i) const
+{
+    return state->as<ob::CompoundState>()
+        ->as<ob::RealVectorStateSpace::StateType>(static_cast<unsigned int>(i))
+        ->values;
+}
+
+bool ompl_parc::MultiRobotSpaceInformation::robotsCollide(std::size_t i, const double *qi, std::size_t j,
+                                                          const double *qj) const
+{
+    thread_local CollisionBody a, b;
+    robots_[i]->computeBody(qi, a);
+    robots_[j]->computeBody(qj, b);
+    return bodiesCollide(a, b);
+}
+
+std::string ompl_parc::MultiRobotSpaceInformation::explainInvalid(const ob::State *state) const
+{
+    for (std::size_t i = 0; i < robots_.size(); ++i)
+    {
+        const auto validity = robots_[i]->checkValidity(getRobotValues(state, i));
+        if (validity != Robot::Validity::VALID)
+            return "robot '" + robots_[i]->getName() + "' is " + Robot::toString(validity);
+    }
+    for (std::size_t i = 0; i < robots_.size(); ++i)
+        for (std::size_t j = i + 1; j < robots_.size(); ++j)
+            if (robotsCollide(i, getRobotValues(state, i), j, getRobotValues(state, j)))
+                return "robots '" + robots_[i]->getName() + "' and '" + robots_[j]->getName() + "' collide";
+    return "";
+}
+
+ompl_parc::MultiRobotSpaceInformationPtr ompl_parc::MultiRobotSpaceInformation::get(const ob::SpaceInformationPtr &si,
+                                                                                    const std::string &who)
+{
+    auto mrsi = std::dynamic_pointer_cast<MultiRobotSpaceInformation>(si);
+    if (!mrsi)
+        throw ompl::Exception(who,
+                              "needs an ompl_parc::MultiRobotSpaceInformation (a robot team over a "
+                              "CompositeStateSpace), got a plain SpaceInformation");
+    return mrsi;
+}

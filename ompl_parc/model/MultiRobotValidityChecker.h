@@ -1,0 +1,28 @@
+#ifndef OMPL_PARC_MULTI_ROBOT_VALIDITY_CHECKER_
+#define OMPL_PARC_MULTI_ROBOT_VALIDITY_CHECKER_
+
+#include "ompl_parc/robots/Robot.h"
+
+#include <ompl/base/StateValidityChecker.h>
+
+#include <vector>
+
+namespace ompl_parc
+{
+    /** \brief Validity of a composite state (one real vector component per robot of \e team, in order):
+        every robot valid alone, and every robot pair apart.
+
+        Bodies are computed once per robot per call (thread-local buffers, so the checker is safe to share
+        between planner threads), then all pairs are tested with the bounding-sphere early-out. */
+    class MultiRobotValidityChecker : public ompl::base::StateValidityChecker
+    {
+      public:
+        MultiRobotValidityChecker(ompl::base::SpaceInformation *si, std::vector<RobotPtr> team);
+        bool isValid(const ompl::base::State *state) const override;
+
+      private:
+        std::vector<RobotPtr> team_;
+    };
+}  // namespace ompl_parc
+
+#endif

@@ -1,0 +1,23 @@
+#include "ompl_parc/robots/DiscRobot.h"
+
+#include <ompl/util/Exception.h>
+
+ompl_parc::DiscRobot::DiscRobot(std::string name, EnvironmentPtr environment, double radius,
+                                const ompl::base::RealVectorBounds &bounds)
+    : Robot(std::move(name), std::move(environment), bounds), radius_(radius)
+{
+    if (!(radius > 0.))
+        throw ompl::Exception("DiscRobot", "robot '" + getName() + "' needs a positive radius");
+    if (getDimension() != 2)
+        throw ompl::Exception("DiscRobot", "robot '" + getName() + "' needs 2D bounds");
+}
+
+void ompl_parc::DiscRobot::computeBody(const double *q, CollisionBody &body) const
+{
+    body.resize(1, true);  // written in place: bodies are computed at every timestep the detector scans
+    body.ax_[0] = body.bx_[0] = q[0];
+    body.ay_[0] = body.by_[0] = q[1];
+    body.az_[0] = body.bz_[0] = 0.;
+    body.radius_[0] = radius_;
+    body.updateBound();
+}

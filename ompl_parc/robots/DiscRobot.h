@@ -1,0 +1,26 @@
+#ifndef OMPL_PARC_DISC_ROBOT_
+#define OMPL_PARC_DISC_ROBOT_
+
+#include "ompl_parc/robots/Robot.h"
+
+namespace ompl_parc
+{
+    /** \brief A holonomic disc in the plane; configuration (x, y) of its centre. */
+    class DiscRobot : public Robot
+    {
+      public:
+        /** \brief \e bounds limit the centre; throws ompl::Exception for a non-positive radius. */
+        DiscRobot(std::string name, EnvironmentPtr environment, double radius,
+                  const ompl::base::RealVectorBounds &bounds);
+
+        std::string getKind() const override { return "disc"; }
+        void computeBody(const double *q, CollisionBody &body) const override;
+
+        double getRadius() const { return radius_; }
+
+      private:
+        double radius_;
+    };
+}  // namespace ompl_parc
+
+#endif

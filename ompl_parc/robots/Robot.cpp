@@ -1,0 +1,90 @@
+#include "ompl_parc/robots/Robot.h"
+
+#include "ompl_parc/collision/CapsuleCollision.h"
+
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/util/Exception.h>
+
+#include <algorithm>
+
+namespace ob = ompl::base;
+
+ompl_parc::Robot::Robot(std::string name, EnvironmentPtr environment, const ob::RealVectorBounds &bounds)
+    : name_(std::move(name)),
+      environment_(environment ? std::move(environment) : std::make_shared<Environment>()),
+      bounds_(bounds),
+      dimension_(static_cast<unsigned int>(bounds.low.size()))
+{
+    if (dimension_ == 0 || bounds.high.size() != dimension_)
+        throw ompl::Exception("Robot", "robot '" + name_ + "' needs bounds with equal, non-zero dimensions");
+    for (unsigned int i = 0; i < dimension_; ++i)
+        if (!(bounds.low[i] < bounds.high[i]))
+            throw ompl::Exception("Robot", "robot '" + name_ + "' has empty bounds in dimension " + std::to_string(i));
+    auto space = std::make_shared<ob::RealVectorStateSpace>(dimension_);
+    space->setBounds(bounds);
+    space->setName(name_);
+    si_ = std::make_shared<ob::SpaceInformation>(space);
+    si_->setStateValidityChecker([this](const ob::State *state) { return isValid(state); });
+    setResolution(128.);
+}
+
+void ompl_parc::Robot::setResolution(double stepsPerUnit)
+{
+    if (!(stepsPerUnit > 0.))
+        throw ompl::Exception("Robot", "resolution must be positive");
+    const double fraction = std::min(0.5, 1. / (stepsPerUnit * getStateSpace()->getMaximumExtent()));
+    si_->setStateValidityCheckingResolution(fraction);
+    si_->setup();
+}
+
+ompl_parc::Robot::Validity ompl_parc::Robot::checkValidity(const double *q) const
+{
+    for (unsigned int i = 0; i < dimension_; ++i)
+        if (!(q[i] >= bounds_.low[i] && q[i] <= bounds_.high[i]))
+            return Validity::OUT_OF_BOUNDS;
+    thread_local CollisionBody body;
+    computeBody(q, body);
+    if (selfCollides(body))
+        return Validity::SELF_COLLISION;
+    if (environment_->collides(body))
+        return Validity::ENVIRONMENT_COLLISION;
+    return Validity::VALID;
+}
+
+bool ompl_parc::Robot::isValid(const ob::State *state) const
+{
+    return isValid(state->as<ob::RealVectorStateSpace::StateType>()->values);
+}
+
+bool ompl_parc::Robot::selfCollides(const CollisionBody &body) const
+{
+    return std::any_of(selfCollisionPairs_.begin(), selfCollisionPairs_.end(),
+                       [&body](const auto &p) { return capsulesCollide(body, p.first, body, p.second); });
+}
+
+void ompl_parc::Robot::stateToConfig(const ob::State *state, double *q) const
+{
+    const double *values = state->as<ob::RealVectorStateSpace::StateType>()->values;
+    std::copy(values, values + dimension_, q);
+}
+
+void ompl_parc::Robot::configToState(const double *q, ob::State *state) const
+{
+    std::copy(q, q + dimension_, state->as<ob::RealVectorStateSpace::StateType>()->values);
+}
+
+std::string ompl_parc::Robot::toString(Validity validity)
+{
+    switch (validity)
+    {
+        case Validity::VALID:
+            return "valid";
+        case Validity::OUT_OF_BOUNDS:
+            return "out of bounds";
+        case Validity::SELF_COLLISION:
+            return "in self-collision";
+        case Validity::ENVIRONMENT_COLLISION:
+            return "in collision with the environment";
+    }
+    return "unknown";
+}

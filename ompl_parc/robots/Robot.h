@@ -1,0 +1,92 @@
+#ifndef OMPL_PARC_ROBOT_
+#define OMPL_PARC_ROBOT_
+
+#include "ompl_parc/collision/CollisionBody.h"
+#include "ompl_parc/collision/Environment.h"
+
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/base/spaces/RealVectorBounds.h>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ompl_parc
+{
+    /** \brief One robot of a team: its own configuration space, validity against the static world, and
+        the collision body used for robot-robot checks.
+
+        Every robot lives in a bounded real vector space (a workspace box for mobile robots, joint limits
+        for arms), so a configuration is a flat array of getDimension() doubles. Plans, conflict scans
+        and the validator work on such arrays; OMPL planners work on the robot's own SpaceInformation,
+        whose validity checker is isValid(). Subclasses provide the kinematics in computeBody(). */
+    class Robot
+    {
+      public:
+        /** \brief Why a configuration is invalid, for error messages. */
+        enum class Validity
+        {
+            VALID,
+            OUT_OF_BOUNDS,
+            SELF_COLLISION,
+            ENVIRONMENT_COLLISION
+        };
+
+        /** \brief \e bounds are the configuration bounds; throws ompl::Exception if they are empty. */
+        Robot(std::string name, EnvironmentPtr environment, const ompl::base::RealVectorBounds &bounds);
+        virtual ~Robot() = default;
+        Robot(const Robot &) = delete;
+        Robot &operator=(const Robot &) = delete;
+
+        const std::string &getName() const { return name_; }
+
+        /** \brief A short kind name ("disc", "planar_arm", ...), written into solution files. */
+        virtual std::string getKind() const = 0;
+
+        /** \brief The shape of the robot at configuration \e q (world frame). */
+        virtual void computeBody(const double *q, CollisionBody &body) const = 0;
+
+        const ompl::base::SpaceInformationPtr &getSpaceInformation() const { return si_; }
+        const ompl::base::StateSpacePtr &getStateSpace() const { return si_->getStateSpace(); }
+        const EnvironmentPtr &getEnvironment() const { return environment_; }
+        unsigned int getDimension() const { return dimension_; }
+        const ompl::base::RealVectorBounds &getBounds() const { return bounds_; }
+
+        /** \brief Pairs of capsule indices of the body that must not touch (non-adjacent links). */
+        const std::vector<std::pair<std::size_t, std::size_t>> &getSelfCollisionPairs() const
+        {
+            return selfCollisionPairs_;
+        }
+
+        /** \brief Checks bounds, self-collision and the environment, in that order. */
+        Validity checkValidity(const double *q) const;
+        bool isValid(const double *q) const { return checkValidity(q) == Validity::VALID; }
+        bool isValid(const ompl::base::State *state) const;
+
+        /** \brief True if the two bodies (of this robot) overlap in any listed self-collision pair. */
+        bool selfCollides(const CollisionBody &body) const;
+
+        void stateToConfig(const ompl::base::State *state, double *q) const;
+        void configToState(const double *q, ompl::base::State *state) const;
+
+        /** \brief Motions are checked every 1/\e stepsPerUnit of distance (the plans' timestep length). */
+        void setResolution(double stepsPerUnit);
+
+        static std::string toString(Validity validity);
+
+      protected:
+        std::vector<std::pair<std::size_t, std::size_t>> selfCollisionPairs_;
+
+      private:
+        std::string name_;
+        EnvironmentPtr environment_;
+        ompl::base::RealVectorBounds bounds_;
+        unsigned int dimension_;
+        ompl::base::SpaceInformationPtr si_;
+    };
+
+    using RobotPtr = std::shared_ptr<Robot>;
+}  // namespace ompl_parc
+
+#endif

@@ -1,0 +1,436 @@
+#include "ompl_parc/robots/UrdfArm.h"
+
+#include "ompl_parc/collision/CapsuleCollision.h"
+
+#include <console_bridge/console.h>
+#include <ompl/util/Exception.h>
+#include <urdf_parser/urdf_parser.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+
+namespace
+{
+    const char *const CONTEXT = "UrdfArm";
+
+    /** While it exists, urdfdom's error messages (console_bridge) are kept instead of printed, so that a
+        malformed URDF is reported in one line, with the first of them; other messages go on as before.
+        console_bridge's handler is global: one parse at a time. */
+    class UrdfdomErrors : public console_bridge::OutputHandler
+    {
+      public:
+        UrdfdomErrors() : lock_(mutex()), previous_(console_bridge::getOutputHandler())
+        {
+            console_bridge::useOutputHandler(this);
+        }
+        ~UrdfdomErrors() override { console_bridge::restorePreviousOutputHandler(); }
+        UrdfdomErrors(const UrdfdomErrors &) = delete;
+        UrdfdomErrors &operator=(const UrdfdomErrors &) = delete;
+
+        void log(const std::string &text, console_bridge::LogLevel level, const char *filename, int line) override
+        {
+            if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR)
+            {
+                if (first_.empty())
+                    first_ = text;
+            }
+            else if (previous_ != nullptr)
+                previous_->log(text, level, filename, line);
+        }
+
+        /** \brief The first error urdfdom reported (empty if none). */
+        const std::string &first() const { return first_; }
+
+      private:
+        static std::mutex &mutex()
+        {
+            static std::mutex m;
+            return m;
+        }
+
+        std::lock_guard<std::mutex> lock_;
+        console_bridge::OutputHandler *previous_;
+        std::string first_;
+    };
+
+    Eigen::Isometry3d toIsometry(const urdf::Pose &pose)
+    {
+        Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+        t.translation() = Eigen::Vector3d(pose.position.x, pose.position.y, pose.position.z);
+        t.linear() = Eigen::Quaterniond(pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z)
+                         .normalized()
+                         .toRotationMatrix();
+        return t;
+    }
+
+    /** The primitive of one <collision> element of \e link, placed by \e linkPose in chain frame \e frame. */
+    ompl_parc::UrdfArm::Primitive toPrimitive(const urdf::Link &link, const urdf::Collision &collision,
+                                              std::size_t frame, const Eigen::Isometry3d &linkPose)
+    {
+        using Shape = ompl_parc::Obstacle::Shape;
+        ompl_parc::Obstacle shape;
+        shape.name = link.name;
+        shape.pose = linkPose * toIsometry(collision.origin);
+        const auto *geometry = collision.geometry.get();
+        if (geometry == nullptr)
+            throw ompl::Exception(CONTEXT, "link '" + link.name + "' has a <collision> without <geometry>");
+        switch (geometry->type)
+        {
+            case urdf::Geometry::SPHERE:
+                shape.shape = Shape::SPHERE;
+                shape.size.x() = static_cast<const urdf::Sphere *>(geometry)->radius;
+                break;
+            case urdf::Geometry::BOX:
+            {
+                const auto &dim = static_cast<const urdf::Box *>(geometry)->dim;
+                shape.shape = Shape::BOX;
+                shape.size = Eigen::Vector3d(dim.x, dim.y, dim.z);
+                break;
+            }
+            case urdf::Geometry::CYLINDER:
+            {
+                const auto *cylinder = static_cast<const urdf::Cylinder *>(geometry);
+                shape.shape = Shape::CYLINDER;
+                shape.size = Eigen::Vector3d(cylinder->radius, 0., cylinder->length);
+                break;
+            }
+            default:
+                throw ompl::Exception(CONTEXT, "link '" + link.name +
+                                                   "' has mesh collision geometry; only box, cylinder and sphere "
+                                                   "are supported");
+        }
+        if (!(shape.size.maxCoeff() > 0.) || (shape.shape == Shape::BOX && !(shape.size.minCoeff() > 0.)) ||
+            (shape.shape == Shape::CYLINDER && !(shape.size.z() > 0.)))
+            throw ompl::Exception(CONTEXT, "link '" + link.name + "' has a collision primitive of non-positive size");
+        return {frame, shape};
+    }
+
+    /** Primitives of \e link and of the links hanging off it by fixed joints (not \e onChain ones). */
+    void collectPrimitives(const urdf::ModelInterface &model, const urdf::Link &link, std::size_t frame,
+                           const Eigen::Isometry3d &linkPose, const std::vector<const urdf::Joint *> &onChain,
+                           std::vector<ompl_parc::UrdfArm::Primitive> &out)
+    {
+        for (const auto &collision : link.collision_array)
+            out.push_back(toPrimitive(link, *collision, frame, linkPose));
+        for (const auto &joint : link.child_joints)
+        {
+            if (std::find(onChain.begin(), onChain.end(), joint.get()) != onChain.end())
+                continue;
+            if (joint->type != urdf::Joint::FIXED)
+                throw ompl::Exception(CONTEXT, "non-serial chain: movable joint '" + joint->name +
+                                                   "' branches off link '" + link.name + "'");
+            collectPrimitives(model, *model.getLink(joint->child_link_name), frame,
+                              linkPose * toIsometry(joint->parent_to_joint_origin_transform), onChain, out);
+        }
+    }
+}  // namespace
+
+ompl_parc::UrdfArm::Chain ompl_parc::UrdfArm::parseChain(const std::string &urdfXml, const std::string &baseLink,
+                                                         const std::string &tipLink)
+{
+    urdf::ModelInterfaceSharedPtr model;
+    {
+        UrdfdomErrors errors;
+        try
+        {
+            model = urdf::parseURDF(urdfXml);
+        }
+        catch (const std::exception &e)
+        {
+            throw ompl::Exception(CONTEXT, std::string("malformed URDF: ") + e.what());
+        }
+        if (!model)
+            throw ompl::Exception(
+                CONTEXT, "malformed URDF: " +
+                             (errors.first().empty() ? std::string("urdfdom could not parse it") : errors.first()));
+    }
+    const auto base = model->getLink(baseLink), tip = model->getLink(tipLink);
+    if (!base)
+        throw ompl::Exception(CONTEXT, "URDF '" + model->getName() + "' has no base link '" + baseLink + "'");
+    if (!tip)
+        throw ompl::Exception(CONTEXT, "URDF '" + model->getName() + "' has no tip link '" + tipLink + "'");
+
+    // Joints from the tip up to the base, then reversed.
+    std::vector<const urdf::Joint *> joints;
+    for (auto link = tip; link != base; link = link->getParent())
+    {
+        if (!link->getParent())
+            throw ompl::Exception(CONTEXT, "tip link '" + tipLink + "' is not below base link '" + baseLink + "'");
+        joints.push_back(link->parent_joint.get());
+    }
+    std::reverse(joints.begin(), joints.end());
+
+    Chain chain;
+    std::vector<double> low, high;
+    // Chain link frames: frame k is the child link of the k-th movable joint; a link reached through fixed
+    // joints sits at `pending` in the frame of the last movable joint's child.
+    Eigen::Isometry3d pending = Eigen::Isometry3d::Identity();
+    std::vector<std::pair<std::size_t, Eigen::Isometry3d>> linkPoses = {{0, pending}};
+    for (const urdf::Joint *joint : joints)
+    {
+        pending = pending * toIsometry(joint->parent_to_joint_origin_transform);
+        if (joint->type != urdf::Joint::FIXED)
+        {
+            if (joint->type == urdf::Joint::REVOLUTE)
+            {
+                if (!joint->limits)
+                    throw ompl::Exception(CONTEXT, "revolute joint '" + joint->name + "' has no <limit>");
+                if (!(joint->limits->lower < joint->limits->upper))
+                    throw ompl::Exception(CONTEXT, "revolute joint '" + joint->name + "' has an empty <limit>");
+                low.push_back(joint->limits->lower);
+                high.push_back(joint->limits->upper);
+            }
+            else if (joint->type == urdf::Joint::CONTINUOUS)
+            {
+                low.push_back(-M_PI);
+                high.push_back(M_PI);
+            }
+            else
+                throw ompl::Exception(CONTEXT,
+                                      "joint '" + joint->name + "' is not revolute, continuous or fixed (unsupported)");
+            const Eigen::Vector3d axis(joint->axis.x, joint->axis.y, joint->axis.z);
+            if (!(axis.norm() > 1e-9))
+                throw ompl::Exception(CONTEXT, "joint '" + joint->name + "' has a zero <axis>");
+            chain.offsets.push_back(pending);
+            chain.axes.push_back(axis.normalized());
+            chain.names.push_back(joint->name);
+            pending.setIdentity();
+        }
+        linkPoses.emplace_back(chain.offsets.size(), pending);
+    }
+    if (chain.offsets.empty())
+        throw ompl::Exception(CONTEXT, "chain '" + baseLink + "' .. '" + tipLink + "' has no movable joint");
+    chain.tipOffset = pending;
+    chain.limits.resize(low.size());
+    chain.limits.low = low;
+    chain.limits.high = high;
+
+    // The chain's links, base first, each with what hangs off it by fixed joints.
+    std::vector<const urdf::Link *> links = {base.get()};
+    for (const urdf::Joint *joint : joints)
+        links.push_back(model->getLink(joint->child_link_name).get());
+    for (std::size_t k = 0; k < links.size(); ++k)
+        collectPrimitives(*model, *links[k], linkPoses[k].first, linkPoses[k].second, joints, chain.primitives);
+    if (chain.primitives.empty())
+        throw ompl::Exception(CONTEXT, "chain '" + baseLink + "' .. '" + tipLink + "' has no collision geometry");
+    return chain;
+}
+
+ompl_parc::UrdfArm::UrdfArm(std::string name, EnvironmentPtr environment, const std::string &urdfXml,
+                            const std::string &baseLink, const std::string &tipLink, const Eigen::Isometry3d &basePose)
+    : UrdfArm(std::move(name), std::move(environment), parseChain(urdfXml, baseLink, tipLink), basePose)
+{
+    urdfXml_ = urdfXml;
+    baseLink_ = baseLink;
+    tipLink_ = tipLink;
+}
+
+ompl_parc::UrdfArm::UrdfArm(std::string name, EnvironmentPtr environment, Chain chain,
+                            const Eigen::Isometry3d &basePose)
+    : Robot(std::move(name), std::move(environment), chain.limits),
+      basePose_(basePose),
+      jointNames_(std::move(chain.names)),
+      tipOffset_(chain.tipOffset),
+      primitives_(std::move(chain.primitives))
+{
+    // Aligned frame k = URDF frame k turned by A_k, where A_k takes z onto joint k's axis u_k. Since
+    // R(u_k, q) = A_k Rz(q) A_k^T, frame k = frame k-1 * O_k * R(u_k, q) becomes, for aligned frames,
+    // aligned k = aligned k-1 * (A_{k-1}^T O_k A_k) * Rz(q).
+    alignment_.push_back(Eigen::Matrix3d::Identity());
+    for (std::size_t k = 0; k < chain.offsets.size(); ++k)
+    {
+        const Eigen::Matrix3d &previous = alignment_.back();
+        const Eigen::Matrix3d align =
+            Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), chain.axes[k]).toRotationMatrix();
+        offsetRotations_.push_back(previous.transpose() * chain.offsets[k].linear() * align);
+        offsetTranslations_.push_back(previous.transpose() * chain.offsets[k].translation());
+        alignment_.push_back(align);
+    }
+
+    using Shape = Obstacle::Shape;
+    for (const Primitive &p : primitives_)
+    {
+        const Obstacle &s = p.shape;
+        Eigen::Vector3d half = Eigen::Vector3d::Zero();  // half the capsule's axis, in the primitive's frame
+        double radius = s.size.x();
+        if (s.shape == Shape::CYLINDER)
+            half.z() = 0.5 * s.size.z();
+        else if (s.shape == Shape::BOX)
+        {
+            // Axis along the longest side; the radius reaches the corners of the cross-section.
+            int longest;
+            const Eigen::Vector3d h = 0.5 * s.size;
+            h.maxCoeff(&longest);
+            half[longest] = h[longest];
+            radius = std::sqrt(h.squaredNorm() - h[longest] * h[longest]);
+        }
+        const Eigen::Matrix3d toAligned = alignment_[p.frame].transpose();
+        capsules_.push_back({p.frame, toAligned * (s.pose * (-half)), toAligned * (s.pose * half), radius});
+    }
+    spheresOnly_ = std::all_of(capsules_.begin(), capsules_.end(), [](const LocalCapsule &c) { return c.a == c.b; });
+    std::vector<double> zero(getDimension());
+    for (unsigned int k = 0; k < getDimension(); ++k)
+        zero[k] = std::clamp(0., getBounds().low[k], getBounds().high[k]);
+    CollisionBody body;
+    computeBody(zero.data(), body);
+    computeSelfCollisionPairs(body);
+    checkFixedLinks(body);
+}
+
+std::string ompl_parc::UrdfArm::readFile(const std::string &path)
+{
+    std::ifstream in(path);
+    if (!in)
+        throw ompl::Exception(CONTEXT, "cannot read URDF file '" + path + "'");
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+Eigen::Isometry3d ompl_parc::UrdfArm::pose(double x, double y, double z, double roll, double pitch, double yaw)
+{
+    Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+    t.translation() = Eigen::Vector3d(x, y, z);
+    t.linear() =
+        (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+         Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+            .toRotationMatrix();
+    return t;
+}
+
+void ompl_parc::UrdfArm::computeSelfCollisionPairs(const CollisionBody &zeroBody)
+{
+    for (std::size_t i = 0; i < capsules_.size(); ++i)
+        for (std::size_t j = i + 1; j < capsules_.size(); ++j)
+        {
+            const std::size_t fi = capsules_[i].frame, fj = capsules_[j].frame;
+            if (std::max(fi, fj) - std::min(fi, fj) >= 2 && !capsulesCollide(zeroBody, i, zeroBody, j))
+                selfCollisionPairs_.emplace_back(i, j);
+        }
+}
+
+void ompl_parc::UrdfArm::checkFixedLinks(const CollisionBody &body) const
+{
+    if (!getEnvironment())
+        return;
+    for (std::size_t k = 0; k < capsules_.size(); ++k)
+    {
+        if (capsules_[k].frame != 0)
+            continue;
+        if (const Obstacle *obstacle = getEnvironment()->findCollision(body, k))
+            throw ompl::Exception(CONTEXT, "robot '" + getName() + "': link '" + primitives_[k].shape.name +
+                                               "', fixed to the base, collides with obstacle '" + obstacle->name +
+                                               "' at this base pose (every configuration would be invalid)");
+    }
+}
+
+void ompl_parc::UrdfArm::computeAlignedFrames(const double *q, std::vector<Eigen::Matrix3d> &rotations,
+                                              std::vector<Eigen::Vector3d> &translations) const
+{
+    const std::size_t n = offsetRotations_.size();
+    rotations.resize(n + 1);
+    translations.resize(n + 1);
+    rotations[0] = basePose_.linear();
+    translations[0] = basePose_.translation();
+    for (std::size_t k = 0; k < n; ++k)
+    {
+        translations[k + 1].noalias() = translations[k] + rotations[k] * offsetTranslations_[k];
+        Eigen::Matrix3d turned;
+        turned.noalias() = rotations[k] * offsetRotations_[k];
+        // Right-multiplying by Rz(q) turns the first two columns only.
+        const double c = std::cos(q[k]), s = std::sin(q[k]);
+        Eigen::Matrix3d &r = rotations[k + 1];
+        r.col(0) = c * turned.col(0) + s * turned.col(1);
+        r.col(1) = c * turned.col(1) - s * turned.col(0);
+        r.col(2) = turned.col(2);
+    }
+}
+
+void ompl_parc::UrdfArm::computeFrames(const double *q, std::vector<Eigen::Isometry3d> &frames) const
+{
+    thread_local std::vector<Eigen::Matrix3d> rotations;
+    thread_local std::vector<Eigen::Vector3d> translations;
+    computeAlignedFrames(q, rotations, translations);
+    frames.resize(rotations.size());
+    for (std::size_t k = 0; k < frames.size(); ++k)
+    {
+        frames[k].linear() = rotations[k] * alignment_[k].transpose();
+        frames[k].translation() = translations[k];
+        frames[k].makeAffine();
+    }
+}
+
+Eigen::Isometry3d ompl_parc::UrdfArm::computeTipPose(const double *q) const
+{
+    std::vector<Eigen::Isometry3d> frames;
+    computeFrames(q, frames);
+    return frames.back() * tipOffset_;
+}
+
+void ompl_parc::UrdfArm::computeBody(const double *q, CollisionBody &body) const
+{
+    thread_local std::vector<Eigen::Matrix3d> rotations;
+    thread_local std::vector<Eigen::Vector3d> translations;
+    computeAlignedFrames(q, rotations, translations);
+    body.resize(capsules_.size(), spheresOnly_);
+    for (std::size_t i = 0; i < capsules_.size(); ++i)
+    {
+        const LocalCapsule &c = capsules_[i];
+        const Eigen::Matrix3d &r = rotations[c.frame];
+        const Eigen::Vector3d &t = translations[c.frame];
+        const Eigen::Vector3d a = r * c.a + t, b = r * c.b + t;
+        body.ax_[i] = a.x();
+        body.ay_[i] = a.y();
+        body.az_[i] = a.z();
+        body.bx_[i] = b.x();
+        body.by_[i] = b.y();
+        body.bz_[i] = b.z();
+        body.radius_[i] = c.radius;
+    }
+    body.updateBound();
+}
+
+bool ompl_parc::UrdfArm::solvePositionIk(const Eigen::Vector3d &target, std::mt19937 &rng, std::vector<double> &q,
+                                         unsigned int restarts, double tolerance) const
+{
+    constexpr int ITERATIONS = 300;
+    constexpr double DAMPING = 0.05;
+    const unsigned int n = getDimension();
+    const auto &bounds = getBounds();
+    std::vector<Eigen::Matrix3d> rotations;
+    std::vector<Eigen::Vector3d> translations;
+    Eigen::MatrixXd jacobian(3, n);
+    q.resize(n);
+    for (unsigned int attempt = 0; attempt < restarts; ++attempt)
+    {
+        for (unsigned int k = 0; k < n; ++k)
+            q[k] = std::uniform_real_distribution<double>(bounds.low[k], bounds.high[k])(rng);
+        for (int it = 0; it < ITERATIONS; ++it)
+        {
+            computeAlignedFrames(q.data(), rotations, translations);
+            const Eigen::Vector3d tip =
+                rotations.back() * (alignment_.back().transpose() * tipOffset_.translation()) + translations.back();
+            const Eigen::Vector3d error = target - tip;
+            if (error.norm() < tolerance)
+            {
+                if (isValid(q.data()))
+                    return true;
+                break;
+            }
+            // Joint k turns chain link k about its axis (the z axis of its aligned frame) through its origin.
+            for (unsigned int k = 0; k < n; ++k)
+                jacobian.col(k) = rotations[k + 1].col(2).cross(tip - translations[k + 1]);
+            const Eigen::Matrix3d jjt =
+                jacobian * jacobian.transpose() + DAMPING * DAMPING * Eigen::Matrix3d::Identity();
+            const Eigen::VectorXd step = jacobian.transpose() * jjt.ldlt().solve(error);
+            for (unsigned int k = 0; k < n; ++k)
+                q[k] = std::clamp(q[k] + step[k], bounds.low[k], bounds.high[k]);
+        }
+    }
+    return false;
+}

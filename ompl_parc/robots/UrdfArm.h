@@ -1,0 +1,140 @@
+#ifndef OMPL_PARC_URDF_ARM_
+#define OMPL_PARC_URDF_ARM_
+
+#include "ompl_parc/robots/Robot.h"
+
+#include <Eigen/Geometry>
+
+#include <random>
+#include <string>
+#include <vector>
+
+namespace ompl_parc
+{
+    /** \brief A serial arm of revolute joints read from a URDF (urdfdom), for 3D multi-arm problems.
+
+        The chain runs from \e baseLink to \e tipLink; fixed joints on it are folded into the next movable
+        joint's offset, and links hanging off it by fixed joints (a hand, a flange) are folded into the link
+        they hang from. Movable joints off the chain make it non-serial and are rejected. Revolute joints use
+        their <limit>s; continuous joints are bounded to [-pi, pi] (a configuration space must be bounded);
+        prismatic, planar and floating joints are rejected.
+
+        Collision geometry comes from the <collision> elements: a sphere stays a sphere, a cylinder becomes
+        the capsule around it (same axis and radius), a box the capsule along its longest axis whose radius
+        is the half-diagonal of its cross-section; both contain the primitive, so robot-robot checks on the
+        capsules are conservative. Meshes are rejected, naming the link. Capsule k of the body is primitive
+        k of getPrimitives(), so exact checks (FCL on the primitives) can be compared with ours.
+
+        Self-collision is checked between primitives of links that are not adjacent on the chain, except for
+        pairs that already overlap at the zero configuration (clamped into the joint limits): like an SRDF's
+        "default"/"adjacent" disabled pairs, such overlaps are part of the mechanical design. */
+    class UrdfArm : public Robot
+    {
+      public:
+        /** \brief A collision primitive of the URDF: its shape (size and pose in the frame of chain link
+            \e frame, as an Obstacle) and the name of the URDF link it came from. */
+        struct Primitive
+        {
+            std::size_t frame;
+            Obstacle shape;
+        };
+
+        /** \brief The chain \e baseLink .. \e tipLink of the URDF document \e urdfXml, its base link placed at
+            \e basePose in the world. Throws ompl::Exception naming the offending element for malformed
+            URDF, missing links, unsupported joints or geometry, non-serial chains, and a base pose that puts
+            the base link (or a link fixed to it) into an obstacle of \e environment (as it is now). */
+        UrdfArm(std::string name, EnvironmentPtr environment, const std::string &urdfXml, const std::string &baseLink,
+                const std::string &tipLink, const Eigen::Isometry3d &basePose);
+
+        /** \brief The contents of a URDF file; throws ompl::Exception if it cannot be read. */
+        static std::string readFile(const std::string &path);
+
+        /** \brief The base pose from a position and roll, pitch, yaw (URDF convention: R = Rz Ry Rx). */
+        static Eigen::Isometry3d pose(double x, double y, double z, double roll, double pitch, double yaw);
+
+        std::string getKind() const override { return "urdf_arm"; }
+        void computeBody(const double *q, CollisionBody &body) const override;
+
+        /** \brief World poses of the chain links at \e q: frames[0] is the base link, frames[k] the child
+            link of movable joint k (k = 1..dimension); the tip is frames.back() times getTipOffset(). */
+        void computeFrames(const double *q, std::vector<Eigen::Isometry3d> &frames) const;
+
+        /** \brief World pose of the tip link at \e q. */
+        Eigen::Isometry3d computeTipPose(const double *q) const;
+
+        /** \brief Position-only inverse kinematics: damped least squares from random configurations (up to
+            \e restarts of them, drawn with \e rng) until the tip is within \e tolerance of \e target and the
+            configuration isValid() (bounds, self-collision, environment). */
+        bool solvePositionIk(const Eigen::Vector3d &target, std::mt19937 &rng, std::vector<double> &q,
+                             unsigned int restarts = 50, double tolerance = 1e-4) const;
+
+        const std::vector<Primitive> &getPrimitives() const { return primitives_; }
+        const Eigen::Isometry3d &getBasePose() const { return basePose_; }
+        /** \brief The URDF document and chain ends the arm was built from (so it can be written out again). */
+        const std::string &getUrdfXml() const { return urdfXml_; }
+        const std::string &getBaseLink() const { return baseLink_; }
+        const std::string &getTipLink() const { return tipLink_; }
+        /** \brief Pose of the tip link in the frame of the last movable joint's child link. */
+        const Eigen::Isometry3d &getTipOffset() const { return tipOffset_; }
+        /** \brief Names of the movable joints, base to tip. */
+        const std::vector<std::string> &getJointNames() const { return jointNames_; }
+
+      private:
+        /** \brief A capsule of a primitive, in its chain link's aligned frame. */
+        struct LocalCapsule
+        {
+            std::size_t frame;
+            Eigen::Vector3d a, b;
+            double radius;
+        };
+
+        /** \brief What the URDF says about the chain: joint limits, per movable joint k the offset from
+            the frame of chain link k-1 to the joint and its unit axis, the tip offset and the primitives. */
+        struct Chain
+        {
+            ompl::base::RealVectorBounds limits{0};
+            std::vector<Eigen::Isometry3d> offsets;
+            std::vector<Eigen::Vector3d> axes;
+            std::vector<std::string> names;
+            Eigen::Isometry3d tipOffset{Eigen::Isometry3d::Identity()};
+            std::vector<Primitive> primitives;
+        };
+
+        /** \brief Parses the chain once, before the Robot base needs its bounds. */
+        static Chain parseChain(const std::string &urdfXml, const std::string &baseLink, const std::string &tipLink);
+
+        UrdfArm(std::string name, EnvironmentPtr environment, Chain chain, const Eigen::Isometry3d &basePose);
+
+        /** \brief Joint-aligned frames at \e q, the one forward kinematics every query uses: frame k is chain
+            link k's frame turned by alignment_[k] so that joint k turns about its z axis. A joint then costs
+            a rotation product and a 2D turn of two columns, not a general axis-angle rotation. \e rotations
+            and \e translations get getDimension() + 1 entries (frame 0: the base). */
+        void computeAlignedFrames(const double *q, std::vector<Eigen::Matrix3d> &rotations,
+                                  std::vector<Eigen::Vector3d> &translations) const;
+
+        /** \brief Self-collision pairs: primitives of non-adjacent links not overlapping in \e zeroBody (the
+            body at the zero configuration). */
+        void computeSelfCollisionPairs(const CollisionBody &zeroBody);
+
+        /** \brief Throws ompl::Exception naming the link and the obstacle if a link that never moves (the base
+            link and what is fixed to it) collides with the environment in \e body: no configuration could be
+            valid, so the base pose is bad input, not a planning problem. */
+        void checkFixedLinks(const CollisionBody &body) const;
+
+        Eigen::Isometry3d basePose_;
+        std::string urdfXml_, baseLink_, tipLink_;
+        /** \brief Per movable joint k, the offset from aligned frame k-1 to aligned frame k at q_k = 0. */
+        std::vector<Eigen::Matrix3d> offsetRotations_;
+        std::vector<Eigen::Vector3d> offsetTranslations_;
+        /** \brief Per chain link k, the rotation from its URDF frame to its aligned frame (base: identity). */
+        std::vector<Eigen::Matrix3d> alignment_;
+        std::vector<std::string> jointNames_;
+        Eigen::Isometry3d tipOffset_;
+        std::vector<Primitive> primitives_;
+        /** \brief The primitives' capsules, in their link's aligned frame; whether all are spheres. */
+        std::vector<LocalCapsule> capsules_;
+        bool spheresOnly_{false};
+    };
+}  // namespace ompl_parc
+
+#endif

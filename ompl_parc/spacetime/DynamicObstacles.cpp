@@ -1,0 +1,73 @@
+#include "ompl_parc/spacetime/DynamicObstacles.h"
+
+#include "ompl_parc/collision/CapsuleCollision.h"
+#include "ompl_parc/spacetime/SpaceTimeMotionValidator.h"
+#include "ompl_parc/spacetime/SpaceTimeValidityChecker.h"
+#include "ompl_parc/statespaces/SpaceTimeStateSpace.h"
+
+#include <ompl/util/Exception.h>
+
+#include <algorithm>
+
+ompl_parc::DynamicObstacles::DynamicObstacles(RobotPtr robot, double resolution)
+    : robot_(std::move(robot)), resolution_(resolution)
+{
+    if (!robot_)
+        throw ompl::Exception("DynamicObstacles", "null robot");
+    if (!(resolution > 0.))
+        throw ompl::Exception("DynamicObstacles", "resolution must be positive");
+}
+
+void ompl_parc::DynamicObstacles::addPath(const Robot &other, const std::vector<double> &path)
+{
+    const unsigned int d = other.getDimension();
+    if (path.empty() || path.size() % d != 0)
+        throw ompl::Exception("DynamicObstacles",
+                              "path of robot '" + other.getName() + "' is empty or not a multiple of its dimension");
+    std::vector<CollisionBody> bodies(path.size() / d);
+    for (std::size_t t = 0; t < bodies.size(); ++t)
+        other.computeBody(path.data() + t * d, bodies[t]);
+    bodies_.push_back(std::move(bodies));
+}
+
+bool ompl_parc::DynamicObstacles::isClear(const double *q, std::size_t timestep) const
+{
+    if (!robot_->isValid(q))
+        return false;
+    thread_local CollisionBody body;
+    robot_->computeBody(q, body);
+    return std::none_of(bodies_.begin(), bodies_.end(),
+                        [&](const std::vector<CollisionBody> &other)
+                        { return bodiesCollide(body, other[std::min(timestep, other.size() - 1)]); });
+}
+
+std::optional<std::size_t> ompl_parc::DynamicObstacles::earliestHold(const double *q) const
+{
+    if (!robot_->isValid(q))
+        return std::nullopt;
+    CollisionBody body;
+    robot_->computeBody(q, body);
+    std::size_t hold = 0;
+    for (const auto &other : bodies_)
+    {
+        if (bodiesCollide(body, other.back()))
+            return std::nullopt;  // it arrives there (or stays) and never leaves
+        for (std::size_t t = other.size() - 1; t-- > hold;)
+            if (bodiesCollide(body, other[t]))
+            {
+                hold = t + 1;
+                break;
+            }
+    }
+    return hold;
+}
+
+ompl::base::SpaceInformationPtr ompl_parc::createSpaceTimeSpaceInformation(const ompl::base::StateSpacePtr &space,
+                                                                           const DynamicObstaclesPtr &obstacles)
+{
+    auto si = std::make_shared<ompl::base::SpaceInformation>(std::make_shared<SpaceTimeStateSpace>(space, 1.));
+    si->setStateValidityChecker(std::make_shared<SpaceTimeValidityChecker>(si.get(), obstacles));
+    si->setMotionValidator(std::make_shared<SpaceTimeMotionValidator>(si.get(), obstacles));
+    si->setup();
+    return si;
+}

@@ -1,0 +1,57 @@
+#ifndef OMPL_PARC_DYNAMIC_OBSTACLES_
+#define OMPL_PARC_DYNAMIC_OBSTACLES_
+
+#include "ompl_parc/robots/Robot.h"
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace ompl_parc
+{
+    /** \brief What one robot must avoid when it is planned after others (prioritised planning): the static
+        environment and the other robots' timed paths.
+
+        Each other robot's path is a sequence of configurations at integer timesteps, held after its end (a
+        robot that has arrived stays at its goal). Their collision bodies are computed once here, per
+        timestep, because space-time planning asks for them at the same timesteps over and over. */
+    class DynamicObstacles
+    {
+      public:
+        /** \brief Obstacles for \e robot on a grid of \e resolution timesteps per unit of time. */
+        DynamicObstacles(RobotPtr robot, double resolution);
+
+        const RobotPtr &getRobot() const { return robot_; }
+        double getResolution() const { return resolution_; }
+
+        /** \brief Add robot \e other following \e path (getDimension() values per timestep, not empty). */
+        void addPath(const Robot &other, const std::vector<double> &path);
+
+        std::size_t getPathCount() const { return bodies_.size(); }
+
+        /** \brief True if the robot at \e q is valid (bounds, self, environment) and touches no other robot
+            at timestep \e timestep. */
+        bool isClear(const double *q, std::size_t timestep) const;
+
+        /** \brief The earliest timestep from which the robot can stay at \e q forever untouched; none if
+            \e q is invalid or a robot that has arrived blocks it for good. */
+        std::optional<std::size_t> earliestHold(const double *q) const;
+
+      private:
+        RobotPtr robot_;
+        double resolution_;
+        /** \brief bodies_[o][t]: obstacle o at timestep t; its last body is held afterwards. */
+        std::vector<std::vector<CollisionBody>> bodies_;
+    };
+
+    using DynamicObstaclesPtr = std::shared_ptr<const DynamicObstacles>;
+
+    /** \brief The space-time SpaceInformation of the obstacles' robot: a SpaceTimeStateSpace (vMax 1) over
+        \e space (the robot's space, possibly with local bounds and a seeded sampler), with a
+        SpaceTimeValidityChecker and a SpaceTimeMotionValidator among \e obstacles; set up. */
+    ompl::base::SpaceInformationPtr createSpaceTimeSpaceInformation(const ompl::base::StateSpacePtr &space,
+                                                                    const DynamicObstaclesPtr &obstacles);
+}  // namespace ompl_parc
+
+#endif

@@ -1,0 +1,62 @@
+#include "ompl_parc/planners/subproblem/CompositeRRTConnectSolver.h"
+
+#include "ompl_parc/model/MultiRobotPlan.h"
+#include "ompl_parc/util/SeededPathSimplifier.h"
+#include "ompl_parc/util/SeededRealVectorSampler.h"
+
+#include <ompl/base/ScopedState.h>
+#include <ompl/geometric/planners/rrt/RRTConnect.h>
+
+#include <atomic>
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+ompl_parc::CompositeRRTConnectSolver::CompositeRRTConnectSolver(double range, bool simplify)
+    : range_(range), simplify_(simplify)
+{
+}
+
+bool ompl_parc::CompositeRRTConnectSolver::solve(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
+                                                 const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed,
+                                                 Patch &patch) const
+{
+    if (!subproblem.check(si).empty())
+        return false;
+    const auto local = subproblem.createSpaceInformation(si, seed);
+
+    ob::ScopedState<> start(local), goal(local);
+    for (std::size_t k = 0; k < subproblem.robots.size(); ++k)
+    {
+        std::copy(subproblem.starts[k].begin(), subproblem.starts[k].end(), local->getRobotValues(start.get(), k));
+        std::copy(subproblem.goals[k].begin(), subproblem.goals[k].end(), local->getRobotValues(goal.get(), k));
+    }
+    if (!local->isValid(start.get()) || !local->isValid(goal.get()))
+        return false;
+
+    auto pdef = std::make_shared<ob::ProblemDefinition>(local);
+    pdef->setStartAndGoalStates(start, goal, 1e-9);
+    og::RRTConnect planner(local);
+    planner.setProblemDefinition(pdef);
+    if (range_ > 0.)
+        planner.setRange(range_);
+    planner.setup();
+
+    // RRTConnect evaluates its termination condition once per iteration: counting evaluations caps samples.
+    ob::PlannerTerminationCondition stop = ptc;
+    if (subproblem.sampleCap > 0)
+    {
+        auto iterations = std::make_shared<unsigned int>(0);
+        const unsigned int cap = subproblem.sampleCap;
+        stop = ob::plannerOrTerminationCondition(
+            ptc, ob::PlannerTerminationCondition([iterations, cap] { return ++*iterations > cap; }));
+    }
+    if (planner.solve(stop) != ob::PlannerStatus::EXACT_SOLUTION)
+        return false;
+
+    auto &path = *pdef->getSolutionPath()->as<og::PathGeometric>();
+    if (simplify_)
+        SeededPathSimplifier(local, mixSeed(seed, 0x5eed)).simplify(path, ptc);
+    patch.paths = MultiRobotPlan::layTeamPath(*local, path);
+    return true;
+}

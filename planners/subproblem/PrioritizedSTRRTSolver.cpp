@@ -1,0 +1,141 @@
+#include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
+
+#include "ompl_parc/planners/STRRTstar.h"
+#include "ompl_parc/spacetime/SpaceTimeMotionValidator.h"
+#include "ompl_parc/statespaces/SpaceTimeStateSpace.h"
+#include "ompl_parc/util/SeededRealVectorSampler.h"
+
+#include <ompl/base/ScopedState.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/util/RandomNumbers.h>
+
+#include <numeric>
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+namespace
+{
+    /** A space-time state (robot configuration \e q at time \e t) of \e si. */
+    ob::ScopedState<> spaceTimeState(const ob::SpaceInformationPtr &si, const std::vector<double> &q, double t)
+    {
+        ob::ScopedState<> state(si);
+        auto *compound = state->as<ob::CompoundState>();
+        std::copy(q.begin(), q.end(), compound->as<ob::RealVectorStateSpace::StateType>(0)->values);
+        compound->as<ob::TimeStateSpace::StateType>(1)->position = t;
+        return state;
+    }
+
+    /** Apply \e settings to \e planner (also used to validate them). */
+    void configure(ompl_parc::STRRTstar &planner, const ompl_parc::PrioritizedSTRRTSettings &settings)
+    {
+        planner.setRange(settings.range);
+        planner.setRewiringState(settings.rewiring);
+        planner.setBatchSize(settings.batchSize);
+        planner.setInitialTimeBoundFactor(settings.initialTimeBoundFactor);
+        planner.setTimeBoundFactorIncrease(settings.timeBoundFactorIncrease);
+        planner.setStopAtFirstSolution(true);
+    }
+
+    /** A throw-away space-time space information, to check settings against STRRTstar up front. */
+    ob::SpaceInformationPtr probeSpaceInformation()
+    {
+        return std::make_shared<ob::SpaceInformation>(
+            std::make_shared<ompl_parc::SpaceTimeStateSpace>(std::make_shared<ob::RealVectorStateSpace>(1)));
+    }
+}  // namespace
+
+ompl_parc::PrioritizedSTRRTSolver::PrioritizedSTRRTSolver(PrioritizedSTRRTSettings settings)
+    : settings_(std::move(settings))
+{
+    STRRTstar probe(probeSpaceInformation());
+    configure(probe, settings_);
+}
+
+std::vector<std::size_t> ompl_parc::PrioritizedSTRRTSolver::priorityOrder(std::size_t size,
+                                                                          std::uint_fast32_t seed) const
+{
+    std::vector<std::size_t> order(size);
+    std::iota(order.begin(), order.end(), 0);
+    if (settings_.shuffle)
+    {
+        ompl::RNG rng;
+        rng.setLocalSeed(mixSeed(seed, 0x0dde7));
+        rng.shuffle(order.begin(), order.end());
+    }
+    return order;
+}
+
+std::vector<double> ompl_parc::PrioritizedSTRRTSolver::planRobot(const ob::StateSpacePtr &space,
+                                                                 const DynamicObstaclesPtr &obstacles,
+                                                                 const std::vector<double> &start,
+                                                                 const std::vector<double> &goal, std::size_t hold,
+                                                                 const ob::PlannerTerminationCondition &ptc,
+                                                                 std::uint_fast32_t seed) const
+{
+    if (hold == 0 && start == goal)
+        return start;  // already there, and safe to stay
+    const auto si = createSpaceTimeSpaceInformation(space, obstacles);
+
+    auto pdef = std::make_shared<ob::ProblemDefinition>(si);
+    pdef->setStartAndGoalStates(spaceTimeState(si, start, 0.), spaceTimeState(si, goal, 0.));
+    STRRTstar planner(si);
+    configure(planner, settings_);
+    planner.setMinimumGoalTime(static_cast<double>(hold) / obstacles->getResolution());
+    planner.setLocalSeed(seed);
+    planner.setProblemDefinition(pdef);
+    planner.setup();
+    if (planner.solve(ptc) != ob::PlannerStatus::EXACT_SOLUTION)
+        return {};
+    return std::static_pointer_cast<SpaceTimeMotionValidator>(si->getMotionValidator())
+        ->layOnGrid(*pdef->getSolutionPath()->as<og::PathGeometric>());
+}
+
+bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
+                                              const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed,
+                                              Patch &patch) const
+{
+    if (!subproblem.check(si).empty())
+        return false;
+    const auto local = subproblem.createSpaceInformation(si, seed);
+    const auto &team = local->getRobots();
+
+    std::vector<std::vector<double>> paths(team.size());
+    std::vector<std::size_t> planned;
+    for (std::size_t k : priorityOrder(team.size(), seed))
+    {
+        if (ptc)
+            return false;
+        auto obstacles = std::make_shared<DynamicObstacles>(team[k], si.getResolution());
+        for (std::size_t j : planned)
+            obstacles->addPath(*team[j], paths[j]);
+        const auto hold = obstacles->earliestHold(subproblem.goals[k].data());
+        if (!obstacles->isClear(subproblem.starts[k].data(), 0) || !hold)
+            return false;
+
+        // The sample cap bounds each robot's ST-RRT iterations (termination checks, as in the composite solver).
+        ob::PlannerTerminationCondition stop = ptc;
+        if (subproblem.sampleCap > 0)
+        {
+            auto iterations = std::make_shared<unsigned int>(0);
+            const unsigned int cap = subproblem.sampleCap;
+            stop = ob::plannerOrTerminationCondition(
+                ptc, ob::PlannerTerminationCondition([iterations, cap] { return ++*iterations > cap; }));
+        }
+        paths[k] = planRobot(local->getCompositeSpace()->getRobotSpace(k), obstacles, subproblem.starts[k],
+                             subproblem.goals[k], *hold, stop, mixSeed(seed, 0x57aa + k));
+        if (paths[k].empty())
+            return false;
+        planned.push_back(k);
+    }
+
+    // Robots that arrive early wait at their goal (held safely from their arrival on).
+    std::size_t steps = 0;
+    for (std::size_t k = 0; k < team.size(); ++k)
+        steps = std::max(steps, paths[k].size() / team[k]->getDimension());
+    for (std::size_t k = 0; k < team.size(); ++k)
+        while (paths[k].size() / team[k]->getDimension() < steps)
+            paths[k].insert(paths[k].end(), subproblem.goals[k].begin(), subproblem.goals[k].end());
+    patch.paths = std::move(paths);
+    return true;
+}

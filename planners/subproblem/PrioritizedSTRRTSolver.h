@@ -1,0 +1,64 @@
+#ifndef OMPL_PARC_PRIORITIZED_STRRT_SOLVER_
+#define OMPL_PARC_PRIORITIZED_STRRT_SOLVER_
+
+#include "ompl_parc/arc/SubproblemSolver.h"
+#include "ompl_parc/spacetime/DynamicObstacles.h"
+
+#include <string>
+#include <vector>
+
+namespace ompl_parc
+{
+    /** \brief Settings of PP-ST-RRT's ST-RRT; the defaults are the P-ARC authors' (range = vMax = 1 in space-time,
+        batches of 4096, time bound factors 2 and 2, no rewiring, first solution returned). */
+    struct PrioritizedSTRRTSettings
+    {
+        /** \brief Longest tree edge in the space-time distance. */
+        double range{1.};
+        /** \brief Priority order: the team's order, or shuffled with the solve's seed. */
+        bool shuffle{false};
+        /** \brief "off", "radius" or "knearest". */
+        std::string rewiring{"off"};
+        unsigned int batchSize{4096};
+        double initialTimeBoundFactor{2.};
+        double timeBoundFactorIncrease{2.};
+    };
+
+    /** \brief Decoupled subproblem solver (PP-ST-RRT): the team's robots are planned one after another in
+        priority order, each with ST-RRT (our STRRTstar) in its own (local-bounded) space x time, the robots
+        planned before it being moving obstacles.
+
+        A robot's goal counts only from the earliest timestep from which it can stay there forever without
+        being hit by an earlier robot (the goal hold); if an earlier robot ends on the goal for good, the
+        solve fails at once. Each space-time path is laid on the timestep grid (the checked interpolations at
+        integer timesteps, arrival rounded up) and all paths are padded with their goals to the same length.
+        Cheap when the team's robots can mostly yield to each other; incomplete, as prioritised planning is. */
+    class PrioritizedSTRRTSolver : public SubproblemSolver
+    {
+      public:
+        /** \brief Throws ompl::Exception for settings STRRTstar rejects. */
+        explicit PrioritizedSTRRTSolver(PrioritizedSTRRTSettings settings = PrioritizedSTRRTSettings());
+
+        std::string getName() const override { return "pp-st-rrt"; }
+        const PrioritizedSTRRTSettings &getSettings() const { return settings_; }
+
+        bool solve(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
+                   const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed,
+                   Patch &patch) const override;
+
+        /** \brief The order (positions in the team) in which a solve with \e seed plans a team of \e size. */
+        std::vector<std::size_t> priorityOrder(std::size_t size, std::uint_fast32_t seed) const;
+
+      private:
+        /** \brief One robot's timestep path from \e start to \e goal among \e obstacles, arriving no earlier
+            than timestep \e hold, sampling in \e space; empty on failure. */
+        std::vector<double> planRobot(const ompl::base::StateSpacePtr &space, const DynamicObstaclesPtr &obstacles,
+                                      const std::vector<double> &start, const std::vector<double> &goal,
+                                      std::size_t hold, const ompl::base::PlannerTerminationCondition &ptc,
+                                      std::uint_fast32_t seed) const;
+
+        PrioritizedSTRRTSettings settings_;
+    };
+}  // namespace ompl_parc
+
+#endif
