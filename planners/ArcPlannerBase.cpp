@@ -46,7 +46,7 @@ ompl_parc::ArcPlannerBase::~ArcPlannerBase() = default;
 
 void ompl_parc::ArcPlannerBase::setProfile(const std::string &profile)
 {
-    settings_ = ArcSettings::profile(profile);
+    settings_.applyProfile(profile);
     profile_ = profile;
     invalidateState();
 }
@@ -56,12 +56,14 @@ void ompl_parc::ArcPlannerBase::setWindow(unsigned int window)
     if (window == 0)
         throw ompl::Exception(getName(), "window must be at least 1 timestep");
     settings_.window = window;
+    settings_.explicitFields |= ArcSettings::WINDOW;
     invalidateState();
 }
 
 void ompl_parc::ArcPlannerBase::setGrowth(const std::string &growth)
 {
     settings_.growth = ArcSettings::growthFromString(growth);
+    settings_.explicitFields |= ArcSettings::GROWTH;
     invalidateState();
 }
 
@@ -70,6 +72,7 @@ void ompl_parc::ArcPlannerBase::setGrowthStep(double step)
     if (!(step > 0.))
         throw ompl::Exception(getName(), "growth_step must be positive");
     settings_.growthStep = step;
+    settings_.explicitFields |= ArcSettings::GROWTH_STEP;
     invalidateState();
 }
 
@@ -78,6 +81,7 @@ void ompl_parc::ArcPlannerBase::setEndpointStep(unsigned int step)
     if (step == 0)
         throw ompl::Exception(getName(), "endpoint_step must be at least 1 timestep");
     settings_.endpointStep = step;
+    settings_.explicitFields |= ArcSettings::ENDPOINT_STEP;
     invalidateState();
 }
 
@@ -86,6 +90,7 @@ void ompl_parc::ArcPlannerBase::setBoundMargin(double margin)
     if (!(margin >= 0.))
         throw ompl::Exception(getName(), "bound_margin must be non-negative");
     settings_.boundMargin = margin;
+    settings_.explicitFields |= ArcSettings::BOUND_MARGIN;
     invalidateState();
 }
 
@@ -94,24 +99,28 @@ void ompl_parc::ArcPlannerBase::setMinBoundRange(double range)
     if (!(range > 0.))
         throw ompl::Exception(getName(), "min_bound_range must be positive");
     settings_.minBoundRange = range;
+    settings_.explicitFields |= ArcSettings::MIN_BOUND_RANGE;
     invalidateState();
 }
 
 void ompl_parc::ArcPlannerBase::setSampleCap(unsigned int cap)
 {
     settings_.sampleCap = cap;
+    settings_.explicitFields |= ArcSettings::SAMPLE_CAP;
     invalidateState();
 }
 
 void ompl_parc::ArcPlannerBase::setSolvers(const std::string &solvers)
 {
     settings_.solvers = ArcSettings::solversFromString(solvers);
+    settings_.explicitFields |= ArcSettings::SOLVERS;
     invalidateState();
 }
 
 void ompl_parc::ArcPlannerBase::setSimplifyInitial(bool simplify)
 {
     settings_.simplifyInitial = simplify;
+    settings_.explicitFields |= ArcSettings::SIMPLIFY_INITIAL;
 }
 
 void ompl_parc::ArcPlannerBase::setSeed(unsigned int seed)

@@ -9,6 +9,8 @@
 #include <ompl/util/Exception.h>
 #include <ompl/util/Time.h>
 
+#include <map>
+
 using namespace ompl_parc;
 namespace ob = ompl::base;
 
@@ -146,4 +148,30 @@ TEST(Arc, ParametersAreDeclaredAndStatisticsReported)
     EXPECT_TRUE(data.properties.count("resolution_cpu_time REAL"));
     EXPECT_THROW(arc.setProfile("humanoid"), ompl::Exception);
     EXPECT_THROW(arc.setWindow(0), ompl::Exception);
+}
+
+TEST(Arc, ProfileAndExplicitParametersInAnyOrder)
+{
+    // OMPL's ParamSet::setParams applies a map alphabetically: "bound_margin" before "profile". A profile must
+    // never undo a parameter set one by one, whichever comes first.
+    const auto problem = scenarios::createPlanarCross(4);
+    const std::map<std::string, std::string> values = {
+        {"profile", "panda"}, {"bound_margin", "0.25"}, {"growth_step", "7"}, {"solvers", "hierarchy"}};
+    ARC mapped(problem.getSpaceInformation());
+    ASSERT_TRUE(mapped.params().setParams(values, true));
+    ARC profileLast(problem.getSpaceInformation());
+    for (const char *name : {"bound_margin", "growth_step", "solvers", "profile"})
+        ASSERT_TRUE(profileLast.params().setParam(name, values.at(name)));
+    ARC profileFirst(problem.getSpaceInformation());
+    for (const char *name : {"profile", "bound_margin", "growth_step", "solvers"})
+        ASSERT_TRUE(profileFirst.params().setParam(name, values.at(name)));
+    for (const ARC *arc : {&mapped, &profileLast, &profileFirst})
+    {
+        EXPECT_DOUBLE_EQ(arc->getBoundMargin(), 0.25);
+        EXPECT_DOUBLE_EQ(arc->getGrowthStep(), 7.);
+        EXPECT_EQ(arc->getSolvers(), "hierarchy");
+        EXPECT_EQ(arc->getWindow(), 20u);  // the panda profile's, not set explicitly
+        EXPECT_EQ(arc->getGrowth(), "exponential");
+        EXPECT_DOUBLE_EQ(arc->getMinBoundRange(), 0.5);
+    }
 }

@@ -23,6 +23,25 @@ ompl_parc::ArcSettings ompl_parc::ArcSettings::profile(const std::string &name)
     throw ompl::Exception("ArcSettings", "unknown profile '" + name + "' (valid: mobile, planar, panda)");
 }
 
+void ompl_parc::ArcSettings::applyProfile(const std::string &name)
+{
+    const ArcSettings p = profile(name);
+    const auto take = [this](Field field, auto &mine, const auto &theirs)
+    {
+        if ((explicitFields & field) == 0)
+            mine = theirs;
+    };
+    take(WINDOW, window, p.window);
+    take(GROWTH, growth, p.growth);
+    take(GROWTH_STEP, growthStep, p.growthStep);
+    take(ENDPOINT_STEP, endpointStep, p.endpointStep);
+    take(BOUND_MARGIN, boundMargin, p.boundMargin);
+    take(MIN_BOUND_RANGE, minBoundRange, p.minBoundRange);
+    take(SAMPLE_CAP, sampleCap, p.sampleCap);
+    take(SOLVERS, solvers, p.solvers);
+    take(SIMPLIFY_INITIAL, simplifyInitial, p.simplifyInitial);
+}
+
 std::vector<std::string> ompl_parc::ArcSettings::profileNames()
 {
     return {"mobile", "planar", "panda"};

@@ -44,6 +44,27 @@ namespace ompl_parc
         /** \brief Shortcut the initial single-robot paths with OMPL's simplifier. */
         bool simplifyInitial{true};
 
+        /** \brief The fields, as bits of explicitFields. */
+        enum Field : unsigned int
+        {
+            WINDOW = 1u << 0,
+            GROWTH = 1u << 1,
+            GROWTH_STEP = 1u << 2,
+            ENDPOINT_STEP = 1u << 3,
+            BOUND_MARGIN = 1u << 4,
+            MIN_BOUND_RANGE = 1u << 5,
+            SAMPLE_CAP = 1u << 6,
+            SOLVERS = 1u << 7,
+            SIMPLIFY_INITIAL = 1u << 8
+        };
+        /** \brief The fields set one by one (planner parameters): a profile applied later keeps them, so a
+            profile and explicit parameters give the same settings in any order (OMPL's ParamSet applies a
+            map of parameters alphabetically, "profile" after "bound_margin"). */
+        unsigned int explicitFields{0};
+
+        /** \brief Set every field that was not set explicitly to profile \e name's value (see profile()). */
+        void applyProfile(const std::string &name);
+
         /** \brief The authors' tuned values: "mobile" (w 200, linear +200, margin 2, min range 2, cap 5000),
             "planar" (w 100, exponential 1.05, endpoint step 10, margin 1, min range 0.5, cap 50000),
             "panda" (w 20, exponential 1.05, endpoint step 10, margin 1, min range 0.5, cap 50000). Throws
