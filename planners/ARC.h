@@ -9,16 +9,13 @@ namespace ompl_parc
         repair the earliest robot-robot conflict by solving a locally coupled subproblem around it (window
         and robot set grown until a solver of the hierarchy succeeds, up to the global problem).
 
-        Works on a MultiRobotSpaceInformation (a clear ompl::Exception otherwise) with a GoalState goal.
-        This is the yardstick P-ARC's speedups are measured against. */
+        The RepairLoop with one worker, which runs every stage on the calling thread. Works on a
+        MultiRobotSpaceInformation (a clear ompl::Exception otherwise) with a GoalState goal. This is the
+        yardstick P-ARC's speedups are measured against. */
     class ARC : public ArcPlannerBase
     {
       public:
         explicit ARC(const ompl::base::SpaceInformationPtr &si);
-
-      protected:
-        bool computeInitialPlans(const ompl::base::PlannerTerminationCondition &ptc) override;
-        bool resolveConflicts(const ompl::base::PlannerTerminationCondition &ptc) override;
     };
 }  // namespace ompl_parc
 

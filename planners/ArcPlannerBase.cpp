@@ -1,9 +1,7 @@
 #include "ompl_parc/planners/ArcPlannerBase.h"
 
-#include "ompl_parc/parallel/StageClock.h"
 #include "ompl_parc/planners/subproblem/CompositeRRTConnectSolver.h"
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
-#include "ompl_parc/util/SeededRealVectorSampler.h"
 
 #include <ompl/base/goals/GoalState.h>
 #include <ompl/util/Exception.h>
@@ -13,6 +11,26 @@
 #include <limits>
 
 namespace ob = ompl::base;
+
+namespace
+{
+    /** The subproblem solvers of \e solvers, in the order they are tried. */
+    std::vector<ompl_parc::SubproblemSolverPtr> makeHierarchy(ompl_parc::ArcSettings::Solvers solvers)
+    {
+        const auto prioritized = std::make_shared<ompl_parc::PrioritizedSTRRTSolver>();
+        const auto composite = std::make_shared<ompl_parc::CompositeRRTConnectSolver>();
+        switch (solvers)
+        {
+            case ompl_parc::ArcSettings::Solvers::COMPOSITE:
+                return {composite};
+            case ompl_parc::ArcSettings::Solvers::PRIORITIZED:
+                return {prioritized};
+            case ompl_parc::ArcSettings::Solvers::HIERARCHY:
+                break;
+        }
+        return {prioritized, composite};
+    }
+}  // namespace
 
 ompl_parc::ArcPlannerBase::ArcPlannerBase(const ob::SpaceInformationPtr &si, const std::string &name)
     : ob::Planner(si, name), mrsi_(MultiRobotSpaceInformation::get(si, name))
@@ -46,81 +64,72 @@ ompl_parc::ArcPlannerBase::~ArcPlannerBase() = default;
 
 void ompl_parc::ArcPlannerBase::setProfile(const std::string &profile)
 {
-    settings_.applyProfile(profile);
+    options_.settings.applyProfile(profile);
     profile_ = profile;
-    invalidateState();
 }
 
 void ompl_parc::ArcPlannerBase::setWindow(unsigned int window)
 {
     if (window == 0)
         throw ompl::Exception(getName(), "window must be at least 1 timestep");
-    settings_.window = window;
-    settings_.explicitFields |= ArcSettings::WINDOW;
-    invalidateState();
+    options_.settings.window = window;
+    options_.settings.explicitFields |= ArcSettings::WINDOW;
 }
 
 void ompl_parc::ArcPlannerBase::setGrowth(const std::string &growth)
 {
-    settings_.growth = ArcSettings::growthFromString(growth);
-    settings_.explicitFields |= ArcSettings::GROWTH;
-    invalidateState();
+    options_.settings.growth = ArcSettings::growthFromString(growth);
+    options_.settings.explicitFields |= ArcSettings::GROWTH;
 }
 
 void ompl_parc::ArcPlannerBase::setGrowthStep(double step)
 {
     if (!(step > 0.))
         throw ompl::Exception(getName(), "growth_step must be positive");
-    settings_.growthStep = step;
-    settings_.explicitFields |= ArcSettings::GROWTH_STEP;
-    invalidateState();
+    options_.settings.growthStep = step;
+    options_.settings.explicitFields |= ArcSettings::GROWTH_STEP;
 }
 
 void ompl_parc::ArcPlannerBase::setEndpointStep(unsigned int step)
 {
     if (step == 0)
         throw ompl::Exception(getName(), "endpoint_step must be at least 1 timestep");
-    settings_.endpointStep = step;
-    settings_.explicitFields |= ArcSettings::ENDPOINT_STEP;
-    invalidateState();
+    options_.settings.endpointStep = step;
+    options_.settings.explicitFields |= ArcSettings::ENDPOINT_STEP;
 }
 
 void ompl_parc::ArcPlannerBase::setBoundMargin(double margin)
 {
     if (!(margin >= 0.))
         throw ompl::Exception(getName(), "bound_margin must be non-negative");
-    settings_.boundMargin = margin;
-    settings_.explicitFields |= ArcSettings::BOUND_MARGIN;
-    invalidateState();
+    options_.settings.boundMargin = margin;
+    options_.settings.explicitFields |= ArcSettings::BOUND_MARGIN;
 }
 
 void ompl_parc::ArcPlannerBase::setMinBoundRange(double range)
 {
     if (!(range > 0.))
         throw ompl::Exception(getName(), "min_bound_range must be positive");
-    settings_.minBoundRange = range;
-    settings_.explicitFields |= ArcSettings::MIN_BOUND_RANGE;
-    invalidateState();
+    options_.settings.minBoundRange = range;
+    options_.settings.explicitFields |= ArcSettings::MIN_BOUND_RANGE;
 }
 
 void ompl_parc::ArcPlannerBase::setSampleCap(unsigned int cap)
 {
-    settings_.sampleCap = cap;
-    settings_.explicitFields |= ArcSettings::SAMPLE_CAP;
-    invalidateState();
+    options_.settings.sampleCap = cap;
+    options_.settings.explicitFields |= ArcSettings::SAMPLE_CAP;
 }
 
 void ompl_parc::ArcPlannerBase::setSolvers(const std::string &solvers)
 {
-    settings_.solvers = ArcSettings::solversFromString(solvers);
-    settings_.explicitFields |= ArcSettings::SOLVERS;
-    invalidateState();
+    options_.settings.solvers = ArcSettings::solversFromString(solvers);
+    options_.settings.explicitFields |= ArcSettings::SOLVERS;
 }
 
 void ompl_parc::ArcPlannerBase::setSimplifyInitial(bool simplify)
 {
-    settings_.simplifyInitial = simplify;
-    settings_.explicitFields |= ArcSettings::SIMPLIFY_INITIAL;
+    options_.settings.simplifyInitial = simplify;
+    options_.settings.explicitFields |= ArcSettings::SIMPLIFY_INITIAL;
 }
 
 void ompl_parc::ArcPlannerBase::setSeed(unsigned int seed)
@@ -128,40 +137,38 @@ void ompl_parc::ArcPlannerBase::setSeed(unsigned int seed)
     seed_ = seed;
 }
 
-void ompl_parc::ArcPlannerBase::invalidateState()
+void ompl_parc::ArcPlannerBase::setWorkers(unsigned int workers)
 {
-    resolver_.reset();  // rebuilt from the new settings at the next solve()
+    if (workers == 0)
+        throw ompl::Exception(getName(), "workers must be at least 1");
+    options_.workers = workers;
 }
 
-std::vector<ompl_parc::SubproblemSolverPtr> ompl_parc::ArcPlannerBase::makeHierarchy() const
+void ompl_parc::ArcPlannerBase::setHorizon(unsigned int horizon)
 {
-    const auto prioritized = std::make_shared<PrioritizedSTRRTSolver>();
-    const auto composite = std::make_shared<CompositeRRTConnectSolver>();
-    switch (settings_.solvers)
-    {
-        case ArcSettings::Solvers::COMPOSITE:
-            return {composite};
-        case ArcSettings::Solvers::PRIORITIZED:
-            return {prioritized};
-        case ArcSettings::Solvers::HIERARCHY:
-            break;
-    }
-    return {prioritized, composite};
+    if (horizon == 0)
+        throw ompl::Exception(getName(), "horizon must be at least 1 timestep");
+    options_.horizon = horizon;
+}
+
+const ompl_parc::MultiRobotPlan &ompl_parc::ArcPlannerBase::getPlan() const
+{
+    static const MultiRobotPlan none;
+    return loop_ ? loop_->getPlan() : none;
+}
+
+const ompl_parc::ArcStatistics &ompl_parc::ArcPlannerBase::getStatistics() const
+{
+    static const ArcStatistics none;
+    return loop_ ? loop_->getStatistics() : none;
 }
 
 void ompl_parc::ArcPlannerBase::clear()
 {
     ob::Planner::clear();
+    loop_.reset();
     problem_.reset();
-    plan_ = MultiRobotPlan();
-    planned_.clear();
-    initialised_ = false;
-    detector_.reset();
-    resolver_.reset();
-    cache_.clear();
-    statistics_ = ArcStatistics();
     statusMessage_.clear();
-    effectiveSeed_ = 0;
 }
 
 std::optional<ob::PlannerStatus> ompl_parc::ArcPlannerBase::readProblem()
@@ -197,11 +204,8 @@ std::optional<ob::PlannerStatus> ompl_parc::ArcPlannerBase::readProblem()
                                                                : ob::PlannerStatus::INVALID_GOAL);
     }
     problem_ = std::move(problem);
-    plan_ = MultiRobotPlan(*mrsi_);
-    planned_.assign(mrsi_->getRobotCount(), 0);
-    detector_ = std::make_unique<ConflictDetector>(*mrsi_);
-    if (effectiveSeed_ == 0)
-        effectiveSeed_ = seed_ != 0 ? seed_ : ompl::RNG().uniformInt(1, std::numeric_limits<int>::max());
+    const std::uint_fast32_t seed = seed_ != 0 ? seed_ : ompl::RNG().uniformInt(1, std::numeric_limits<int>::max());
+    loop_ = std::make_unique<RepairLoop>(*problem_, seed);
     return std::nullopt;
 }
 
@@ -228,57 +232,27 @@ ob::PlannerStatus ompl_parc::ArcPlannerBase::solveStages(const ob::PlannerTermin
     if (!problem_)
         if (auto bad = readProblem())
             return *bad;
-    if (!initialised_)
+    RepairLoopOptions options = options_;
+    options.hierarchy = makeHierarchy(options.settings.solvers);
+    loop_->configure(std::move(options));
+    if (!loop_->isInitialised() && !loop_->planInitial(ptc))
     {
-        bool done;
-        {
-            StageClock clock(statistics_.initialWall, statistics_.initialCpu);
-            done = computeInitialPlans(ptc);
-        }
-        if (!done)
-        {
-            statusMessage_ = "time ran out while planning the robots' individual paths";
-            return ob::PlannerStatus(ob::PlannerStatus::TIMEOUT);
-        }
-        initialised_ = true;
+        statusMessage_ = "time ran out while planning the robots' individual paths";
+        return ob::PlannerStatus(ob::PlannerStatus::TIMEOUT);
     }
-    if (!resolver_)
-        resolver_ = std::make_unique<ConflictResolver>(*mrsi_, settings_, makeHierarchy());
-    if (!resolveConflicts(ptc))
+    if (!loop_->resolve(ptc))
     {
         statusMessage_ = "time ran out while resolving conflicts";
         return ob::PlannerStatus(ob::PlannerStatus::TIMEOUT);
     }
-    pdef_->addSolutionPath(buildSolutionPath(), false, 0., getName());
+    pdef_->addSolutionPath(loop_->buildSolutionPath(), false, 0., getName());
     return ob::PlannerStatus(ob::PlannerStatus::EXACT_SOLUTION);
-}
-
-ompl::geometric::PathGeometricPtr ompl_parc::ArcPlannerBase::buildSolutionPath() const
-{
-    return plan_.toPathGeometric(mrsi_);
-}
-
-void ompl_parc::ArcPlannerBase::applyRepair(const Repair &repair)
-{
-    const Subproblem &sub = repair.subproblem;
-    for (std::size_t k = 0; k < sub.robots.size(); ++k)
-    {
-        plan_.splice(sub.robots[k], sub.windowStart, sub.windowEnd, repair.patch.paths[k]);
-        detector_->invalidate(sub.robots[k], sub.windowStart);
-    }
-    const std::size_t duration = repair.patch.getDuration(plan_.getDimension(sub.robots.front()));
-    cache_.add(sub.robots, sub.windowStart, sub.windowStart + duration);
-    ++statistics_.repairs;
-    statistics_.solverCalls += repair.attempts;
-    statistics_.expansions += repair.expansions;
-    statistics_.globalRepairs += repair.global ? 1 : 0;
-    ++statistics_.solverWins[repair.solver];
 }
 
 void ompl_parc::ArcPlannerBase::getPlannerData(ob::PlannerData &data) const
 {
     ob::Planner::getPlannerData(data);
-    const auto &s = statistics_;
+    const auto &s = getStatistics();
     auto &p = data.properties;
     p["initial_wall_time REAL"] = std::to_string(s.initialWall);
     p["initial_cpu_time REAL"] = std::to_string(s.initialCpu);
@@ -299,9 +273,9 @@ void ompl_parc::ArcPlannerBase::getPlannerData(ob::PlannerData &data) const
         std::replace(column.begin(), column.end(), '-', '_');
         p[column + " INTEGER"] = std::to_string(wins);
     }
-    if (initialised_)
+    if (loop_ && loop_->isInitialised())
     {
-        p["makespan INTEGER"] = std::to_string(plan_.getMakespan());
-        p["sum_of_costs INTEGER"] = std::to_string(plan_.getSumOfCosts());
+        p["makespan INTEGER"] = std::to_string(getPlan().getMakespan());
+        p["sum_of_costs INTEGER"] = std::to_string(getPlan().getSumOfCosts());
     }
 }

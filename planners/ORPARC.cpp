@@ -4,6 +4,10 @@
 
 #include <ompl/tools/multiplan/ParallelPlan.h>
 #include <ompl/util/Exception.h>
+#include <ompl/util/RandomNumbers.h>
+
+#include <limits>
+#include <map>
 
 namespace ob = ompl::base;
 
@@ -39,16 +43,18 @@ void ompl_parc::ORPARC::clear()
 {
     PARC::clear();
     racers_.clear();
-    winner_.clear();
+    winner_.reset();
+}
+
+const ompl_parc::MultiRobotPlan &ompl_parc::ORPARC::getPlan() const
+{
+    return winner_ ? winner_->getPlan() : PARC::getPlan();
 }
 
 ob::PlannerStatus ompl_parc::ORPARC::solve(const ob::PlannerTerminationCondition &ptc)
 {
     checkValidity();
-    statusMessage_.clear();
-    if (!problem_)
-        if (auto bad = readProblem())
-            return *bad;
+    winner_.reset();
     if (racers_.empty())
     {
         // Every instance gets this planner's parameters, its share of the workers and its own seed.
@@ -56,12 +62,14 @@ ob::PlannerStatus ompl_parc::ORPARC::solve(const ob::PlannerTerminationCondition
         params().getParams(values);
         values.erase("instances");
         values.erase("total_workers");
+        const std::uint_fast32_t seed =
+            getSeed() != 0 ? getSeed() : ompl::RNG().uniformInt(1, std::numeric_limits<int>::max());
         for (unsigned int k = 0; k < instances_; ++k)
         {
             auto racer = std::make_shared<PARC>(si_);
             racer->setName(getName() + "#" + std::to_string(k));
             racer->params().setParams(values, true);
-            racer->setSeed(mixSeed(effectiveSeed_, k));
+            racer->setSeed(mixSeed(seed, k));
             racer->setProblemDefinition(pdef_);
             racers_.push_back(racer);
         }
@@ -78,12 +86,9 @@ ob::PlannerStatus ompl_parc::ORPARC::solve(const ob::PlannerTerminationCondition
         for (const auto &racer : racers_)
             if (!solution.approximate_ && solution.plannerName_ == racer->getName())
             {
-                winner_ = racer->getName();
-                plan_ = racer->getPlan();
-                statistics_ = racer->getStatistics();
+                winner_ = racer;
                 return ob::PlannerStatus(ob::PlannerStatus::EXACT_SOLUTION);
             }
-    statusMessage_ = racers_.front()->getStatusMessage();
     return ob::PlannerStatus(ob::PlannerStatus::TIMEOUT);
 }
 
@@ -91,5 +96,5 @@ void ompl_parc::ORPARC::getPlannerData(ob::PlannerData &data) const
 {
     PARC::getPlannerData(data);
     data.properties["instances INTEGER"] = std::to_string(instances_);
-    data.properties["winner STRING"] = winner_;
+    data.properties["winner STRING"] = winner_ ? winner_->getName() : "";
 }

@@ -3,6 +3,7 @@
 
 #include "ompl_parc/planners/PARC.h"
 
+#include <memory>
 #include <vector>
 
 namespace ompl_parc
@@ -25,6 +26,9 @@ namespace ompl_parc
         void clear() override;
         void getPlannerData(ompl::base::PlannerData &data) const override;
 
+        /** \brief The winner's plan after a successful solve(). */
+        const MultiRobotPlan &getPlan() const;
+
         void setInstances(unsigned int instances);
         unsigned int getInstances() const { return instances_; }
         /** \brief Sets W_k = total / K; throws ompl::Exception unless total is a positive multiple of K. */
@@ -34,7 +38,7 @@ namespace ompl_parc
       private:
         unsigned int instances_{2};
         std::vector<std::shared_ptr<PARC>> racers_;
-        std::string winner_;
+        std::shared_ptr<PARC> winner_;
     };
 }  // namespace ompl_parc
 

@@ -52,10 +52,9 @@ TEST_P(BatchDetection, MatchesTheSequentialScanAndTheDefinitions)
         }
         const auto all = test::allConflicts(si, plan);
         ConflictDetector detector(si);
-        double projected = 0.;
-        unsigned int growths = 0;
-        const auto batch = BatchDetector(detector, pool, horizon, optimistic)
-                               .detect(plan, cache, 200, ob::plannerNonTerminatingCondition(), projected, growths);
+        const auto detected = BatchDetector(detector, pool, horizon, optimistic)
+                                  .detect(plan, cache, 200, ob::plannerNonTerminatingCondition());
+        const auto &batch = detected.entries;
         ASSERT_EQ(batch.empty(), all.empty());
         if (batch.empty())
             continue;
@@ -86,7 +85,7 @@ TEST_P(BatchDetection, MatchesTheSequentialScanAndTheDefinitions)
                                        << " not optimistically independent";
             }
         }
-        EXPECT_GE(projected, 0.);
+        EXPECT_GE(detected.projectedSeconds, 0.);
         // Frontiers are sound: no pair is marked conflict-free past one of its conflicts, also after the
         // detection rounds that followed a conflict (a second call must resume correctly too).
         const auto sound = [&]
@@ -97,7 +96,7 @@ TEST_P(BatchDetection, MatchesTheSequentialScanAndTheDefinitions)
         };
         sound();
         BatchDetector(detector, pool, horizon, optimistic)
-            .detect(plan, cache, 200, ob::plannerNonTerminatingCondition(), projected, growths);
+            .detect(plan, cache, 200, ob::plannerNonTerminatingCondition());
         sound();
     }
     EXPECT_GT(batches, 5);

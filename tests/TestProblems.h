@@ -1,6 +1,8 @@
 #ifndef OMPL_PARC_TESTS_TEST_PROBLEMS_
 #define OMPL_PARC_TESTS_TEST_PROBLEMS_
 
+#include "ompl_parc/arc/Conflict.h"
+#include "ompl_parc/arc/Patch.h"
 #include "ompl_parc/arc/Subproblem.h"
 #include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/model/MultiRobotProblem.h"
@@ -11,8 +13,6 @@
 
 #include <random>
 #include <vector>
-
-#include "ompl_parc/arc/Conflict.h"
 
 namespace ompl_parc::test
 {

@@ -6,7 +6,7 @@
 
 #include <algorithm>
 
-ompl_parc::BatchDetector::BatchDetector(ConflictDetector &detector, WorkerPool &pool, unsigned int horizon,
+ompl_parc::BatchDetector::BatchDetector(ConflictDetector &detector, WorkerPool &pool, std::size_t horizon,
                                         bool optimistic)
     : detector_(detector), pool_(pool), horizon_(horizon), optimistic_(optimistic), workerPairs_(pool.getWorkerCount())
 {
@@ -16,12 +16,14 @@ ompl_parc::BatchDetector::BatchDetector(ConflictDetector &detector, WorkerPool &
         workerPairs_[p % workerPairs_.size()].push_back(p);  // round-robin, as in the paper
 }
 
-std::vector<ompl_parc::BatchEntry> ompl_parc::BatchDetector::detect(const MultiRobotPlan &plan,
-                                                                    const RepairCache &cache, std::size_t window,
-                                                                    const ompl::base::PlannerTerminationCondition &ptc,
-                                                                    double &projected, unsigned int &teamGrowths)
+ompl_parc::DetectedBatch ompl_parc::BatchDetector::detect(const MultiRobotPlan &plan, const RepairCache &cache,
+                                                          std::size_t window,
+                                                          const ompl::base::PlannerTerminationCondition &ptc)
 {
     ConflictBatch batch(optimistic_, workerPairs_.size(), plan.getRobotCount());
+    // A batch of one is the earliest conflict: scans may stop at the first timestep with one.
+    const bool earliestOnly = workerPairs_.size() == 1;
+    double projected = 0.;
     const auto skip = [&batch](std::size_t i, std::size_t j) { return batch.skipPair(i, j); };
     const std::size_t makespan = plan.getMakespan();
     std::vector<std::vector<Conflict>> found(workerPairs_.size());
@@ -31,7 +33,7 @@ std::vector<ompl_parc::BatchEntry> ompl_parc::BatchDetector::detect(const MultiR
         const std::size_t to = std::min<std::size_t>(from + horizon_, makespan + 1);
         const auto cpu =
             pool_.run([&](unsigned int worker)
-                      { found[worker] = detector_.scan(plan, workerPairs_[worker], from, to, false, skip); });
+                      { found[worker] = detector_.scan(plan, workerPairs_[worker], from, to, earliestOnly, skip); });
         // The coordinator merges the candidates in temporal order and grows the batch.
         const double mergeStart = StageClock::threadCpu();
         std::vector<Conflict> candidates;
@@ -42,12 +44,9 @@ std::vector<ompl_parc::BatchEntry> ompl_parc::BatchDetector::detect(const MultiR
         {
             if (batch.full())
                 break;
-            auto team = cache.expand(c, window);
-            const bool grown = team.size() > 2;
-            if (batch.offer(c, std::move(team)))
-                teamGrowths += grown ? 1 : 0;
+            batch.offer(c, cache.expand(c, window));
         }
         projected += *std::max_element(cpu.begin(), cpu.end()) + (StageClock::threadCpu() - mergeStart);
     }
-    return batch.getEntries();
+    return {batch.getEntries(), projected};
 }

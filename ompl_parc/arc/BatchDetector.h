@@ -8,8 +8,17 @@
 
 #include <ompl/base/PlannerTerminationCondition.h>
 
+#include <limits>
+
 namespace ompl_parc
 {
+    /** \brief One detection call's batch, and the call's projected W-core seconds (see ParcStatistics). */
+    struct DetectedBatch
+    {
+        std::vector<BatchEntry> entries;
+        double projectedSeconds{0.};
+    };
+
     /** \brief P-ARC's distributed conflict detection (paper §III-B).
 
         The robot pairs are dealt round-robin to the pool's W workers. In rounds, every worker scans its
@@ -17,23 +26,26 @@ namespace ompl_parc
         pairs the batch no longer needs; the coordinator then merges the candidates in temporal order, grows
         each into its robot set through the repair cache and offers it to the ConflictBatch, until the batch
         holds W conflicts or the plan ends. The frontiers of the shared ConflictDetector carry over between
-        calls. With W = 1 the batch is exactly the sequential earliest conflict. */
+        calls. With W = 1 the batch is exactly the sequential earliest conflict (ARC's detection: its scans stop
+        at the first timestep with a conflict), and robot-set growth happens here for ARC and P-ARC alike. */
     class BatchDetector
     {
       public:
-        BatchDetector(ConflictDetector &detector, WorkerPool &pool, unsigned int horizon, bool optimistic);
+        /** \brief \e horizon H (timesteps scanned per round; UNBOUNDED: the whole plan in one round, as ARC
+            does); throws ompl::Exception for 0. */
+        BatchDetector(ConflictDetector &detector, WorkerPool &pool, std::size_t horizon, bool optimistic);
 
-        /** \brief The next batch of \e plan (empty: conflict-free, or \e ptc fired). \e window is the half-width
-            used for robot-set expansion. Adds the projected W-core time of the call to \e projected and the
-            number of accepted conflicts whose robot set grew to \e teamGrowths. */
-        std::vector<BatchEntry> detect(const MultiRobotPlan &plan, const RepairCache &cache, std::size_t window,
-                                       const ompl::base::PlannerTerminationCondition &ptc, double &projected,
-                                       unsigned int &teamGrowths);
+        static constexpr std::size_t UNBOUNDED = std::numeric_limits<std::size_t>::max() / 2;
+
+        /** \brief The next batch of \e plan (empty: conflict-free, or \e ptc fired), each conflict with its
+            robot set grown through \e cache over the half-width \e window. */
+        DetectedBatch detect(const MultiRobotPlan &plan, const RepairCache &cache, std::size_t window,
+                             const ompl::base::PlannerTerminationCondition &ptc);
 
       private:
         ConflictDetector &detector_;
         WorkerPool &pool_;
-        unsigned int horizon_;
+        std::size_t horizon_;
         bool optimistic_;
         std::vector<std::vector<std::size_t>> workerPairs_;
     };

@@ -37,20 +37,6 @@ namespace ompl_parc
         std::shared_ptr<MultiRobotSpaceInformation> createSpaceInformation(const MultiRobotSpaceInformation &si,
                                                                            std::uint_fast32_t seed) const;
     };
-
-    /** \brief A subproblem's answer: one path per team robot, all with the same number of timesteps,
-        from its local start (timestep 0) to its local goal (last timestep), one timestep at most
-        1/resolution, team collision-free at every timestep. Robots that arrive early wait at their goal. */
-    struct Patch
-    {
-        std::vector<std::vector<double>> paths;
-
-        /** \brief Number of timesteps the patch lasts (states - 1), given the first robot's dimension. */
-        std::size_t getDuration(unsigned int dimension) const
-        {
-            return paths.empty() ? 0 : paths.front().size() / dimension - 1;
-        }
-    };
 }  // namespace ompl_parc
 
 #endif

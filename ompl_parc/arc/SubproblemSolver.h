@@ -1,6 +1,7 @@
 #ifndef OMPL_PARC_SUBPROBLEM_SOLVER_
 #define OMPL_PARC_SUBPROBLEM_SOLVER_
 
+#include "ompl_parc/arc/Patch.h"
 #include "ompl_parc/arc/Subproblem.h"
 #include "ompl_parc/model/MultiRobotSpaceInformation.h"
 

@@ -24,12 +24,14 @@ ompl_parc::WorkerPool::WorkerPool(unsigned int workers) : workers_(workers)
 {
     if (workers == 0)
         throw ompl::Exception("WorkerPool", "needs at least one worker");
-    pool_ = std::make_unique<boost::asio::thread_pool>(workers);
+    if (workers > 1)
+        pool_ = std::make_unique<boost::asio::thread_pool>(workers);
 }
 
 ompl_parc::WorkerPool::~WorkerPool()
 {
-    pool_->join();
+    if (pool_)
+        pool_->join();
 }
 
 bool ompl_parc::WorkerPool::aborted() const
@@ -40,9 +42,15 @@ bool ompl_parc::WorkerPool::aborted() const
 std::vector<double> ompl_parc::WorkerPool::run(const std::function<void(unsigned int)> &body)
 {
     auto stage = std::make_shared<Stage>();
+    stage_ = stage;
+    if (!pool_)  // one worker: the calling thread runs the stage, no hand-off (ARC)
+    {
+        const double start = StageClock::threadCpu();
+        body(0);
+        return {StageClock::threadCpu() - start};
+    }
     stage->running = workers_;
     stage->cpu.assign(workers_, 0.);
-    stage_ = stage;
     for (unsigned int w = 0; w < workers_; ++w)
         boost::asio::post(*pool_,
                           [stage, w, &body]

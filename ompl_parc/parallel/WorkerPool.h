@@ -15,7 +15,8 @@ namespace ompl_parc
         run() starts the same body once per worker (with its index), waits until every worker has returned,
         and reports each worker's thread CPU time over the stage. If a body throws, the others are told to
         stop through aborted() and the first exception is rethrown after all have joined: no thread outlives
-        a stage, none is left waiting. */
+        a stage, none is left waiting. A pool of one worker runs its stages on the calling thread (no hand-off:
+        ARC is the one-worker case). */
     class WorkerPool
     {
       public:

@@ -95,18 +95,16 @@ namespace
             {
                 ConflictDetector detector(*set.problem.getSpaceInformation());
                 BatchDetector batches(detector, pool, horizon, true);
-                double callProjected = 0.;
-                unsigned int growths = 0;
                 const double cpuStart = processCpuSeconds();
                 const auto start = ompl::time::now();
-                const auto batch = batches.detect(set.plan, cache, window, ob::plannerNonTerminatingCondition(),
-                                                  callProjected, growths);
+                const auto detected = batches.detect(set.plan, cache, window, ob::plannerNonTerminatingCondition());
+                const auto &batch = detected.entries;
                 const double seconds = ompl::time::seconds(ompl::time::now() - start);
                 cpu += processCpuSeconds() - cpuStart;
                 if (batch.empty())
                     throw std::runtime_error("a Panda Cage 8 initial plan set has no conflict: nothing measured");
                 iterationWall += seconds;
-                projected += callProjected;
+                projected += detected.projectedSeconds;
                 conflicts += static_cast<double>(batch.size());
             }
             wall += iterationWall;

@@ -1,0 +1,32 @@
+#ifndef OMPL_PARC_ARC_ARC_STATISTICS_
+#define OMPL_PARC_ARC_ARC_STATISTICS_
+
+#include <map>
+#include <string>
+
+namespace ompl_parc
+{
+    /** \brief Counters and per-stage times of an ARC-family solve (wall and summed CPU seconds), collected
+        by the RepairLoop. */
+    struct ArcStatistics
+    {
+        double initialWall{0.}, initialCpu{0.}, detectionWall{0.}, detectionCpu{0.}, resolutionWall{0.},
+            resolutionCpu{0.};
+        unsigned int conflicts{0}, repairs{0}, solverCalls{0}, expansions{0}, teamGrowths{0}, globalRepairs{0};
+        std::map<std::string, unsigned int> solverWins;
+    };
+
+    /** \brief Counters of P-ARC's parallel stages, and its projected W-core times.
+
+        A stage's projected time is, summed over its fork-join rounds, the largest CPU time any worker
+        spent in the round plus the coordinator's serial work: the wall time the stage would take with one
+        core per worker. On a machine with fewer cores than workers it is a projection, and labelled so. */
+    struct ParcStatistics
+    {
+        unsigned int batches{0}, firstBatchSize{0}, batchedConflicts{0}, repairAttempts{0}, cancelledAttempts{0},
+            initialAttempts{0}, cancelledInitialAttempts{0};
+        double projectedInitial{0.}, projectedDetection{0.}, projectedResolution{0.};
+    };
+}  // namespace ompl_parc
+
+#endif

@@ -1,0 +1,179 @@
+#include "ompl_parc/arc/RepairLoop.h"
+
+#include "ompl_parc/arc/InitialPlanner.h"
+#include "ompl_parc/parallel/OrTaskRunner.h"
+#include "ompl_parc/parallel/StageClock.h"
+#include "ompl_parc/util/SeededRealVectorSampler.h"
+
+#include <ompl/util/Exception.h>
+
+#include <algorithm>
+
+namespace ob = ompl::base;
+
+namespace
+{
+    double largest(const std::vector<double> &values)
+    {
+        return values.empty() ? 0. : *std::max_element(values.begin(), values.end());
+    }
+
+    /** Seeds of the repair stage live apart from the initial stage's (one per robot). */
+    constexpr std::uint_fast32_t REPAIR_SEEDS = 0x10000;
+}  // namespace
+
+ompl_parc::RepairLoop::RepairLoop(const MultiRobotProblem &problem, std::uint_fast32_t seed)
+    : problem_(problem),
+      seed_(seed),
+      plan_(*problem.getSpaceInformation()),
+      planned_(problem.getSpaceInformation()->getRobotCount(), 0),
+      detector_(*problem.getSpaceInformation())
+{
+}
+
+ompl_parc::RepairLoop::~RepairLoop() = default;
+
+void ompl_parc::RepairLoop::configure(RepairLoopOptions options)
+{
+    if (options.workers == 0)
+        throw ompl::Exception("RepairLoop", "workers must be at least 1");
+    if (options.horizon == 0)
+        throw ompl::Exception("RepairLoop", "the horizon must be at least 1 timestep");
+    if (!pool_ || pool_->getWorkerCount() != options.workers)
+        pool_ = std::make_unique<WorkerPool>(options.workers);
+    resolver_ =
+        std::make_unique<ConflictResolver>(*problem_.getSpaceInformation(), options.settings, options.hierarchy);
+    batchDetector_ = std::make_unique<BatchDetector>(detector_, *pool_, options.horizon, options.optimistic);
+    options_ = std::move(options);
+}
+
+bool ompl_parc::RepairLoop::isInitialised() const
+{
+    return std::all_of(planned_.begin(), planned_.end(), [](char planned) { return planned != 0; });
+}
+
+bool ompl_parc::RepairLoop::planInitial(const ob::PlannerTerminationCondition &ptc)
+{
+    StageClock clock(statistics_.initialWall, statistics_.initialCpu);
+    std::vector<std::size_t> robots;
+    for (std::size_t r = 0; r < planned_.size(); ++r)
+        if (!planned_[r])
+            robots.push_back(r);
+    const InitialPlanner planner(problem_, options_.settings.simplifyInitial);
+    const std::size_t n = planned_.size();
+    OrTaskStatistics stats;
+    const auto paths = OrTaskRunner<std::vector<double>>(*pool_, options_.localOr)
+                           .run(
+                               robots.size(), ptc,
+                               [&](std::size_t task, unsigned int attempt,
+                                   const ob::PlannerTerminationCondition &stop) -> std::optional<std::vector<double>>
+                               {
+                                   const std::size_t r = robots[task];
+                                   // Attempt 0 uses the robot's own seed; extra OR attempts new ones.
+                                   std::vector<double> path;
+                                   if (!planner.plan(r, stop, mixSeed(seed_, r + n * attempt), path))
+                                       return std::nullopt;
+                                   return path;
+                               },
+                               stats);
+    parallel_.initialAttempts += stats.attempts;
+    parallel_.cancelledInitialAttempts += stats.cancelled;
+    parallel_.projectedInitial += largest(stats.workerCpu);
+    for (std::size_t k = 0; k < robots.size(); ++k)
+        if (paths[k])
+        {
+            plan_.setRobotPath(robots[k], *paths[k]);
+            planned_[robots[k]] = 1;
+        }
+    return isInitialised();
+}
+
+bool ompl_parc::RepairLoop::resolve(const ob::PlannerTerminationCondition &ptc)
+{
+    while (!ptc)
+    {
+        DetectedBatch batch;
+        {
+            StageClock clock(statistics_.detectionWall, statistics_.detectionCpu);
+            batch = batchDetector_->detect(plan_, cache_, options_.settings.window, ptc);
+        }
+        parallel_.projectedDetection += batch.projectedSeconds;
+        if (batch.entries.empty())
+            return !ptc;
+        ++parallel_.batches;
+        parallel_.batchedConflicts += static_cast<unsigned int>(batch.entries.size());
+        if (parallel_.batches == 1)
+            parallel_.firstBatchSize = static_cast<unsigned int>(batch.entries.size());
+        for (const BatchEntry &entry : batch.entries)
+            statistics_.teamGrowths += entry.team.size() > 2 ? 1 : 0;
+        StageClock clock(statistics_.resolutionWall, statistics_.resolutionCpu);
+        if (!repairBatch(batch.entries, ptc))
+            return false;
+    }
+    return false;
+}
+
+bool ompl_parc::RepairLoop::repairBatch(const std::vector<BatchEntry> &batch,
+                                        const ob::PlannerTerminationCondition &ptc)
+{
+    // Attempt 0 of the k-th conflict has the k-th conflict's seed whatever W is; extra OR attempts derive new ones.
+    const unsigned int first = statistics_.conflicts;
+    OrTaskStatistics stats;
+    const auto repairs =
+        OrTaskRunner<Repair>(*pool_, options_.localOr)
+            .run(
+                batch.size(), ptc,
+                [&](std::size_t task, unsigned int attempt, const ob::PlannerTerminationCondition &stop)
+                {
+                    auto seed = mixSeed(seed_, REPAIR_SEEDS + first + task + 1);
+                    if (attempt > 0)
+                        seed = mixSeed(seed, attempt);
+                    return resolver_->resolve(plan_, batch[task].team, batch[task].conflict.timestep, stop, seed);
+                },
+                stats);
+    parallel_.repairAttempts += stats.attempts;
+    parallel_.cancelledAttempts += stats.cancelled;
+    parallel_.projectedResolution += largest(stats.workerCpu);
+    bool all = true;
+    for (const auto &repair : repairs)  // batch order: deterministic
+    {
+        ++statistics_.conflicts;
+        if (repair)
+            applyRepair(*repair);
+        else
+            all = false;
+    }
+    return all;
+}
+
+void ompl_parc::RepairLoop::applyRepair(const Repair &repair)
+{
+    const Subproblem &sub = repair.subproblem;
+    repair.patch.spliceInto(plan_, sub);
+    for (std::size_t robot : sub.robots)
+        detector_.invalidate(robot, sub.windowStart);
+    const std::size_t duration = repair.patch.getDuration(plan_.getDimension(sub.robots.front()));
+    cache_.add(sub.robots, sub.windowStart, sub.windowStart + duration);
+    ++statistics_.repairs;
+    statistics_.solverCalls += repair.attempts;
+    statistics_.expansions += repair.expansions;
+    statistics_.globalRepairs += repair.global ? 1 : 0;
+    ++statistics_.solverWins[repair.solver];
+}
+
+ompl::geometric::PathGeometricPtr ompl_parc::RepairLoop::buildSolutionPath() const
+{
+    const auto &si = problem_.getSpaceInformation();
+    auto path = std::make_shared<ompl::geometric::PathGeometric>(si);
+    auto &states = path->getStates();
+    states.resize(plan_.getMakespan() + 1);
+    const std::size_t w = pool_->getWorkerCount(), chunk = (states.size() + w - 1) / w;
+    pool_->run(
+        [&](unsigned int worker)
+        {
+            const std::size_t from = std::min(states.size(), worker * chunk),
+                              to = std::min(states.size(), from + chunk);
+            plan_.allocateStates(*si, from, to, states.data() + from);
+        });
+    return path;
+}

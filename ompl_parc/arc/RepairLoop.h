@@ -1,0 +1,97 @@
+#ifndef OMPL_PARC_ARC_REPAIR_LOOP_
+#define OMPL_PARC_ARC_REPAIR_LOOP_
+
+#include "ompl_parc/arc/ArcSettings.h"
+#include "ompl_parc/arc/ArcStatistics.h"
+#include "ompl_parc/arc/BatchDetector.h"
+#include "ompl_parc/arc/ConflictDetector.h"
+#include "ompl_parc/arc/ConflictResolver.h"
+#include "ompl_parc/arc/RepairCache.h"
+#include "ompl_parc/model/MultiRobotPlan.h"
+#include "ompl_parc/model/MultiRobotProblem.h"
+#include "ompl_parc/parallel/WorkerPool.h"
+
+#include <ompl/base/PlannerTerminationCondition.h>
+#include <ompl/geometric/PathGeometric.h>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace ompl_parc
+{
+    /** \brief How a RepairLoop runs: ARC's settings, the subproblem solvers in the order they are tried, and
+        P-ARC's parallel knobs. ARC is one worker with an unbounded horizon. */
+    struct RepairLoopOptions
+    {
+        ArcSettings settings;
+        std::vector<SubproblemSolverPtr> hierarchy;
+        /** \brief W worker threads (1: every stage on the calling thread). */
+        unsigned int workers{1};
+        /** \brief Sync horizon H of P-ARC's detection rounds; BatchDetector::UNBOUNDED scans the whole plan. */
+        std::size_t horizon{BatchDetector::UNBOUNDED};
+        /** \brief Optimistic (true) or strict batch independence; local OR multi-start of idle workers. */
+        bool optimistic{true}, localOr{true};
+    };
+
+    /** \brief The ARC / P-ARC engine: owns the plan being repaired, the conflict detector, the repair cache,
+        the resolver, the worker pool and the statistics, and runs the paper's pipeline on them.
+
+        planInitial() is the first stage (each robot planned alone; robots handed to workers as they free up,
+        idle workers running extra attempts with local OR). resolve() then loops: detect the next batch of
+        robot-disjoint conflicts (BatchDetector: W = 1 gives the earliest conflict, ARC's), each with its
+        robot set grown through the repair cache; repair the batch concurrently (ConflictResolver: windows
+        that grow up to the global problem); apply each repair in batch order with applyRepair(), the one
+        place that splices a patch, pulls back the detector's frontiers and records the repair in the cache.
+        Seeds are derived from one seed per stage and task, so the same seed gives the same plan, and W = 1 is
+        exactly ARC. Both stages resume where they stopped when the termination condition fired. */
+    class RepairLoop
+    {
+      public:
+        /** \brief An engine for \e problem (kept by reference: it must outlive the loop) seeded with \e seed. */
+        RepairLoop(const MultiRobotProblem &problem, std::uint_fast32_t seed);
+        ~RepairLoop();
+
+        /** \brief Use \e options from the next stage on; keeps the plan, frontiers, cache and statistics. Throws
+            ompl::Exception for 0 workers or horizon, or an empty hierarchy. */
+        void configure(RepairLoopOptions options);
+
+        /** \brief Plan the robots that have no path yet; false if \e ptc fired first (resume later). */
+        bool planInitial(const ompl::base::PlannerTerminationCondition &ptc);
+        /** \brief True once every robot has its individual path. */
+        bool isInitialised() const;
+
+        /** \brief Detect and repair conflicts until none is left (true) or \e ptc fires (false). */
+        bool resolve(const ompl::base::PlannerTerminationCondition &ptc);
+
+        /** \brief The plan as a composite path, one state per timestep, its states allocated by all workers
+            (a large share of the work for long plans of big teams). */
+        ompl::geometric::PathGeometricPtr buildSolutionPath() const;
+
+        const MultiRobotPlan &getPlan() const { return plan_; }
+        const ArcStatistics &getStatistics() const { return statistics_; }
+        const ParcStatistics &getParallelStatistics() const { return parallel_; }
+        std::uint_fast32_t getSeed() const { return seed_; }
+
+      private:
+        /** \brief Splice \e repair into the plan, pull back the frontiers of its robots, cache its interval. */
+        void applyRepair(const Repair &repair);
+        /** \brief Repair \e batch concurrently and apply the repairs in batch order; false if \e ptc fired. */
+        bool repairBatch(const std::vector<BatchEntry> &batch, const ompl::base::PlannerTerminationCondition &ptc);
+
+        const MultiRobotProblem &problem_;
+        std::uint_fast32_t seed_;
+        RepairLoopOptions options_;
+        MultiRobotPlan plan_;
+        std::vector<char> planned_;
+        ConflictDetector detector_;
+        RepairCache cache_;
+        std::unique_ptr<ConflictResolver> resolver_;
+        std::unique_ptr<WorkerPool> pool_;
+        std::unique_ptr<BatchDetector> batchDetector_;
+        ArcStatistics statistics_;
+        ParcStatistics parallel_;
+    };
+}  // namespace ompl_parc
+
+#endif
