@@ -26,8 +26,21 @@ std::string ompl_parc::Subproblem::check(const MultiRobotSpaceInformation &si) c
 std::shared_ptr<ompl_parc::MultiRobotSpaceInformation> ompl_parc::Subproblem::createSpaceInformation(
     const MultiRobotSpaceInformation &si, std::uint_fast32_t seed) const
 {
+    if (!check(si).empty())
+        return nullptr;
     std::vector<RobotPtr> team;
     for (std::size_t r : robots)
         team.push_back(si.getRobot(r));
     return std::make_shared<MultiRobotSpaceInformation>(team, si.getResolution(), bounds, seed);
+}
+
+ompl::base::PlannerTerminationCondition ompl_parc::Subproblem::cappedTermination(
+    const ompl::base::PlannerTerminationCondition &ptc) const
+{
+    if (sampleCap == 0)
+        return ptc;
+    auto iterations = std::make_shared<unsigned int>(0);
+    const unsigned int cap = sampleCap;
+    return ompl::base::plannerOrTerminationCondition(
+        ptc, ompl::base::PlannerTerminationCondition([iterations, cap] { return ++*iterations > cap; }));
 }

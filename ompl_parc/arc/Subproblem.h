@@ -1,6 +1,7 @@
 #ifndef OMPL_PARC_SUBPROBLEM_
 #define OMPL_PARC_SUBPROBLEM_
 
+#include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/base/spaces/RealVectorBounds.h>
 
 #include <cstddef>
@@ -33,9 +34,14 @@ namespace ompl_parc
         std::string check(const MultiRobotSpaceInformation &si) const;
 
         /** \brief The subproblem's own team SpaceInformation: fresh robot spaces with the local bounds and
-            samplers seeded from \e seed (what every SubproblemSolver plans in). Requires check() to pass. */
+            samplers seeded from \e seed (what every SubproblemSolver plans in); null if check() fails. */
         std::shared_ptr<MultiRobotSpaceInformation> createSpaceInformation(const MultiRobotSpaceInformation &si,
                                                                            std::uint_fast32_t seed) const;
+
+        /** \brief \e ptc, or the sample cap once it has been evaluated sampleCap times: OMPL's tree planners
+            evaluate their condition once per iteration, so this caps their samples (no cap when 0). */
+        ompl::base::PlannerTerminationCondition cappedTermination(
+            const ompl::base::PlannerTerminationCondition &ptc) const;
     };
 }  // namespace ompl_parc
 

@@ -7,8 +7,6 @@
 #include <ompl/base/ScopedState.h>
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
 
-#include <atomic>
-
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
 
@@ -21,9 +19,9 @@ bool ompl_parc::CompositeRRTConnectSolver::solve(const MultiRobotSpaceInformatio
                                                  const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed,
                                                  Patch &patch) const
 {
-    if (!subproblem.check(si).empty())
-        return false;
     const auto local = subproblem.createSpaceInformation(si, seed);
+    if (!local)
+        return false;
 
     ob::ScopedState<> start(local), goal(local);
     for (std::size_t k = 0; k < subproblem.robots.size(); ++k)
@@ -42,16 +40,7 @@ bool ompl_parc::CompositeRRTConnectSolver::solve(const MultiRobotSpaceInformatio
         planner.setRange(range_);
     planner.setup();
 
-    // RRTConnect evaluates its termination condition once per iteration: counting evaluations caps samples.
-    ob::PlannerTerminationCondition stop = ptc;
-    if (subproblem.sampleCap > 0)
-    {
-        auto iterations = std::make_shared<unsigned int>(0);
-        const unsigned int cap = subproblem.sampleCap;
-        stop = ob::plannerOrTerminationCondition(
-            ptc, ob::PlannerTerminationCondition([iterations, cap] { return ++*iterations > cap; }));
-    }
-    if (planner.solve(stop) != ob::PlannerStatus::EXACT_SOLUTION)
+    if (planner.solve(subproblem.cappedTermination(ptc)) != ob::PlannerStatus::EXACT_SOLUTION)
         return false;
 
     auto &path = *pdef->getSolutionPath()->as<og::PathGeometric>();

@@ -95,9 +95,9 @@ bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &
                                               const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed,
                                               Patch &patch) const
 {
-    if (!subproblem.check(si).empty())
-        return false;
     const auto local = subproblem.createSpaceInformation(si, seed);
+    if (!local)
+        return false;
     const auto &team = local->getRobots();
 
     std::vector<std::vector<double>> paths(team.size());
@@ -113,17 +113,9 @@ bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &
         if (!obstacles->isClear(subproblem.starts[k].data(), 0) || !hold)
             return false;
 
-        // The sample cap bounds each robot's ST-RRT iterations (termination checks, as in the composite solver).
-        ob::PlannerTerminationCondition stop = ptc;
-        if (subproblem.sampleCap > 0)
-        {
-            auto iterations = std::make_shared<unsigned int>(0);
-            const unsigned int cap = subproblem.sampleCap;
-            stop = ob::plannerOrTerminationCondition(
-                ptc, ob::PlannerTerminationCondition([iterations, cap] { return ++*iterations > cap; }));
-        }
+        // The sample cap bounds each robot's ST-RRT iterations.
         paths[k] = planRobot(local->getCompositeSpace()->getRobotSpace(k), obstacles, subproblem.starts[k],
-                             subproblem.goals[k], *hold, stop, mixSeed(seed, 0x57aa + k));
+                             subproblem.goals[k], *hold, subproblem.cappedTermination(ptc), mixSeed(seed, 0x57aa + k));
         if (paths[k].empty())
             return false;
         planned.push_back(k);
