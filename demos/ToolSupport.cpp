@@ -15,6 +15,7 @@
 
 #include <ompl/util/Console.h>
 
+#include <algorithm>
 #include <functional>
 #include <iostream>
 #include <map>
@@ -105,7 +106,11 @@ ompl::base::PlannerPtr ompl_parc::tools::createPlanner(const std::string &name,
     if (it == planners().end())
         throw std::invalid_argument("unknown planner '" + name + "' (valid: " + join(plannerNames()) + ")");
     auto planner = it->second(si);
-    for (const auto &assignment : params)
+    // A named profile first, so that the parameters given with it override its values whatever their order.
+    std::vector<std::string> ordered(params);
+    std::stable_partition(ordered.begin(), ordered.end(),
+                          [](const std::string &assignment) { return assignment.rfind("profile=", 0) == 0; });
+    for (const auto &assignment : ordered)
     {
         const auto eq = assignment.find('=');
         if (eq == std::string::npos)
@@ -129,6 +134,8 @@ ompl_parc::MultiRobotPlan ompl_parc::tools::planOf(const ompl::base::Planner &pl
 {
     if (const auto *arc = dynamic_cast<const ArcPlannerBase *>(&planner))
         return arc->getPlan();
+    if (const auto *orparc = dynamic_cast<const ORPARC *>(&planner))
+        return orparc->getPlan();
     if (const auto *prioritized = dynamic_cast<const PrioritizedSTRRT *>(&planner))
         return prioritized->getPlan();
     auto &path = *planner.getProblemDefinition()->getSolutionPath()->as<ompl::geometric::PathGeometric>();

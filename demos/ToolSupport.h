@@ -33,14 +33,15 @@ namespace ompl_parc::tools
     std::vector<std::string> plannerNames();
 
     /** \brief Allocates planner \e name on \e si and applies \e params ("key=value", declared parameter
-        names); throws std::invalid_argument listing the valid names for an unknown planner or parameter. */
+        names; a "profile" first, the others in the order given, so explicit values override the profile's);
+        throws std::invalid_argument listing the valid names for an unknown planner or parameter. */
     ompl::base::PlannerPtr createPlanner(const std::string &name, const ompl::base::SpaceInformationPtr &si,
                                          const std::vector<std::string> &params);
 
     /** \brief The solution of \e planner (after a solve with an exact solution) on the timestep grid, as the
-        validator checks it: ARC-family and prioritised planners' own plans; a composite path (OMPL's planners
-        and the coupled baselines) laid on the grid with MultiRobotPlan::fromPathGeometric, after one second of
-        OMPL's shortcutting if \e simplify (the path in the ProblemDefinition is simplified in place). */
+        validator checks it: ARC-family (OR-P-ARC included) and prioritised planners' own plans; a composite path
+       (OMPL's planners and the coupled baselines) laid on the grid with MultiRobotPlan::fromPathGeometric, after one
+       second of OMPL's shortcutting if \e simplify (the path in the ProblemDefinition is simplified in place). */
     MultiRobotPlan planOf(const ompl::base::Planner &planner, const MultiRobotSpaceInformationPtr &si, bool simplify);
 
     /** \brief Parses \e argc/\e argv into a variables map (throws on unknown or malformed options). */

@@ -9,6 +9,8 @@
 #include "ompl_parc/io/SolutionFile.h"
 #include "ompl_parc/io/SvgWriter.h"
 #include "ompl_parc/planners/ArcPlannerBase.h"
+#include "ompl_parc/planners/ORPARC.h"
+#include "ompl_parc/planners/PARC.h"
 #include "ompl_parc/validation/SolutionValidator.h"
 
 #include <ompl/util/RandomNumbers.h>
@@ -22,17 +24,54 @@ using namespace ompl_parc;
 
 namespace
 {
+    /** \brief Which OR-P-ARC instance the statistics lines describe, and how every instance ended. */
+    void printRace(const ORPARC &orparc)
+    {
+        const int reported = orparc.getReportedInstance();
+        if (reported < 0)
+            return;
+        const std::string &name = orparc.getRacer(reported).getName();
+        std::cout << "race       "
+                  << (orparc.getRacerStatus(reported) == ompl::base::PlannerStatus::EXACT_SOLUTION
+                          ? "winner " + name
+                          : "no winner, " + name + " went furthest")
+                  << " of " << orparc.getRacerCount() << " instances (statistics below are its own)\n";
+        for (std::size_t k = 0; k < orparc.getRacerCount(); ++k)
+        {
+            const auto &s = orparc.getRacer(k).getStatistics();
+            std::cout << "instance   " << orparc.getRacer(k).getName() << ": " << orparc.getRacerStatus(k).asString()
+                      << ", stages " << s.initialWall + s.detectionWall + s.resolutionWall << " s, " << s.conflicts
+                      << " conflicts resolved, " << orparc.getRacer(k).getParallelStatistics().repairAttempts
+                      << " repair attempts\n";
+        }
+    }
+
     void printStatistics(const ompl::base::Planner &planner)
     {
-        const auto *arc = dynamic_cast<const ArcPlannerBase *>(&planner);
-        if (arc == nullptr)
+        const ArcStatistics *s = nullptr;
+        const ParcStatistics *parallel = nullptr;
+        if (const auto *orparc = dynamic_cast<const ORPARC *>(&planner))
+        {
+            printRace(*orparc);
+            s = &orparc->getStatistics();
+            parallel = &orparc->getParallelStatistics();
+        }
+        else if (const auto *arc = dynamic_cast<const ArcPlannerBase *>(&planner))
+        {
+            s = &arc->getStatistics();
+            if (const auto *parc = dynamic_cast<const PARC *>(arc))
+                parallel = &parc->getParallelStatistics();
+        }
+        if (s == nullptr)
             return;
-        const auto &s = arc->getStatistics();
-        std::cout << "stages     initial " << s.initialWall << " s, detection " << s.detectionWall << " s, resolution "
-                  << s.resolutionWall << " s (wall)\n"
-                  << "conflicts  " << s.conflicts << " resolved, " << s.solverCalls << " solver calls, " << s.expansions
-                  << " window expansions, " << s.teamGrowths << " robot-set growths, " << s.globalRepairs
-                  << " global repairs\n";
+        std::cout << "stages     initial " << s->initialWall << " s, detection " << s->detectionWall
+                  << " s, resolution " << s->resolutionWall << " s (wall)\n"
+                  << "conflicts  " << s->conflicts << " resolved, " << s->solverCalls << " solver calls, "
+                  << s->expansions << " window expansions, " << s->teamGrowths << " robot-set growths, "
+                  << s->globalRepairs << " global repairs\n";
+        if (parallel != nullptr)
+            std::cout << "parallel   " << parallel->batches << " batches, " << parallel->repairAttempts
+                      << " repair attempts (" << parallel->cancelledAttempts << " cancelled)\n";
     }
 }  // namespace
 

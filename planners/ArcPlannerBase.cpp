@@ -2,13 +2,12 @@
 
 #include "ompl_parc/planners/subproblem/CompositeRRTConnectSolver.h"
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
+#include "ompl_parc/util/PlannerSeed.h"
 
 #include <ompl/base/goals/GoalState.h>
 #include <ompl/util/Exception.h>
-#include <ompl/util/RandomNumbers.h>
 
 #include <algorithm>
-#include <limits>
 
 namespace ob = ompl::base;
 
@@ -204,8 +203,7 @@ std::optional<ob::PlannerStatus> ompl_parc::ArcPlannerBase::readProblem()
                                                                : ob::PlannerStatus::INVALID_GOAL);
     }
     problem_ = std::move(problem);
-    const std::uint_fast32_t seed = seed_ != 0 ? seed_ : ompl::RNG().uniformInt(1, std::numeric_limits<int>::max());
-    loop_ = std::make_unique<RepairLoop>(*problem_, seed);
+    loop_ = std::make_unique<RepairLoop>(*problem_, seedOrDraw(seed_));
     return std::nullopt;
 }
 

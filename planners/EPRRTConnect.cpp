@@ -1,5 +1,6 @@
 #include "ompl_parc/planners/EPRRTConnect.h"
 
+#include "ompl_parc/util/PlannerSeed.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
 
 #include <ompl/base/goals/GoalSampleableRegion.h>
@@ -7,7 +8,6 @@
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/tools/config/SelfConfig.h>
 #include <ompl/util/Exception.h>
-#include <ompl/util/RandomNumbers.h>
 
 #include <atomic>
 #include <exception>
@@ -181,7 +181,7 @@ ob::PlannerStatus ompl_parc::EPRRTConnect::solve(const ob::PlannerTerminationCon
     if (goalTree_->nn.size() == 0)
         return ob::PlannerStatus::INVALID_GOAL;
 
-    const std::uint_fast32_t seed = seed_ != 0 ? seed_ : ompl::RNG().uniformInt(1, std::numeric_limits<int>::max());
+    const std::uint_fast32_t seed = seedOrDraw(seed_);
     stop_ = false;
     std::vector<std::thread> threads;
     std::vector<std::exception_ptr> errors(workers_);

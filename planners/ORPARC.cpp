@@ -1,100 +1,128 @@
 #include "ompl_parc/planners/ORPARC.h"
 
-#include "ompl_parc/util/SeededRealVectorSampler.h"
+#include <ompl/base/PlannerData.h>
 
-#include <ompl/tools/multiplan/ParallelPlan.h>
-#include <ompl/util/Exception.h>
-#include <ompl/util/RandomNumbers.h>
-
-#include <limits>
 #include <map>
+#include <tuple>
 
 namespace ob = ompl::base;
 
-ompl_parc::ORPARC::ORPARC(const ob::SpaceInformationPtr &si) : PARC(si)
+ompl_parc::ORPARC::ORPARC(const ob::SpaceInformationPtr &si)
+    : ob::Planner(si, "ORPARC"), prototype_(std::make_shared<PARC>(si)), race_(*this)
 {
-    setName("ORPARC");
-    declareParam<unsigned int>("instances", this, &ORPARC::setInstances, &ORPARC::getInstances, "1:1:64");
+    specs_ = prototype_->getSpecs();
+    specs_.multithreaded = true;
+    // The prototype's GenericParams themselves: setting "window" on ORPARC sets the prototype's window.
+    params().include(prototype_->params());
+    race_.declareInstances(params());
     declareParam<unsigned int>("total_workers", this, &ORPARC::setTotalWorkers, &ORPARC::getTotalWorkers, "1:1:64");
 }
 
 ompl_parc::ORPARC::~ORPARC() = default;
 
-void ompl_parc::ORPARC::setInstances(unsigned int instances)
-{
-    if (instances == 0)
-        throw ompl::Exception(getName(), "instances must be at least 1");
-    instances_ = instances;
-    racers_.clear();
-}
-
 void ompl_parc::ORPARC::setTotalWorkers(unsigned int total)
 {
-    if (total == 0 || total % instances_ != 0)
-        throw ompl::Exception(getName(), "total_workers (" + std::to_string(total) +
-                                             ") must be a positive multiple of "
-                                             "instances (" +
-                                             std::to_string(instances_) + ")");
-    setWorkers(total / instances_);
-    racers_.clear();
+    prototype_->setWorkers(race_.workersPerInstance(total));
+}
+
+void ompl_parc::ORPARC::setup()
+{
+    Planner::setup();
+    if (pdef_ && !race_.hasRacers())
+        createRacers();
 }
 
 void ompl_parc::ORPARC::clear()
 {
-    PARC::clear();
-    racers_.clear();
-    winner_.reset();
+    Planner::clear();
+    race_.clear();
 }
 
-const ompl_parc::MultiRobotPlan &ompl_parc::ORPARC::getPlan() const
+void ompl_parc::ORPARC::setProblemDefinition(const ob::ProblemDefinitionPtr &pdef)
 {
-    return winner_ ? winner_->getPlan() : PARC::getPlan();
+    Planner::setProblemDefinition(pdef);
+    race_.clear();
+}
+
+void ompl_parc::ORPARC::createRacers()
+{
+    // The profile first: it sets the fields no other parameter was set for (ArcSettings::explicitFields),
+    // and the prototype's values of all other parameters then make each racer equal to the prototype.
+    std::map<std::string, std::string> values;
+    prototype_->params().getParams(values);
+    const std::string profile = values.at("profile");
+    values.erase("profile");
+    race_.createRacers(
+        [&](unsigned int, std::uint_fast32_t seed)
+        {
+            auto racer = std::make_shared<PARC>(si_);
+            racer->params().setParam("profile", profile);
+            racer->params().setParams(values, true);
+            racer->setSeed(seed);
+            return racer;
+        },
+        prototype_->getSeed(), pdef_);
 }
 
 ob::PlannerStatus ompl_parc::ORPARC::solve(const ob::PlannerTerminationCondition &ptc)
 {
     checkValidity();
-    winner_.reset();
-    if (racers_.empty())
-    {
-        // Every instance gets this planner's parameters, its share of the workers and its own seed.
-        std::map<std::string, std::string> values;
-        params().getParams(values);
-        values.erase("instances");
-        values.erase("total_workers");
-        const std::uint_fast32_t seed =
-            getSeed() != 0 ? getSeed() : ompl::RNG().uniformInt(1, std::numeric_limits<int>::max());
-        for (unsigned int k = 0; k < instances_; ++k)
-        {
-            auto racer = std::make_shared<PARC>(si_);
-            racer->setName(getName() + "#" + std::to_string(k));
-            racer->params().setParams(values, true);
-            racer->setSeed(mixSeed(seed, k));
-            racer->setProblemDefinition(pdef_);
-            racers_.push_back(racer);
-        }
-    }
-    ompl::tools::ParallelPlan race(pdef_);
-    for (const auto &racer : racers_)
-        race.addPlanner(racer);
-    // ParallelPlan terminates the condition it is given once a racer wins: give it its own.
-    const ob::PlannerTerminationCondition raceStop([&ptc] { return ptc(); });
-    race.solve(raceStop, 1, racers_.size(), false);
+    if (!race_.hasRacers())
+        createRacers();
+    return race_.run(ptc);
+}
 
-    // The winner is the racer that added the first exact solution.
-    for (const auto &solution : pdef_->getSolutions())
-        for (const auto &racer : racers_)
-            if (!solution.approximate_ && solution.plannerName_ == racer->getName())
-            {
-                winner_ = racer;
-                return ob::PlannerStatus(ob::PlannerStatus::EXACT_SOLUTION);
-            }
-    return ob::PlannerStatus(ob::PlannerStatus::TIMEOUT);
+const ompl_parc::PARC &ompl_parc::ORPARC::getRacer(std::size_t k) const
+{
+    return static_cast<const PARC &>(*race_.getRacers().at(k));
+}
+
+int ompl_parc::ORPARC::getReportedInstance() const
+{
+    if (race_.getWinner() >= 0 || !race_.hasRun())
+        return race_.getWinner();
+    const auto progress = [this](std::size_t k)
+    {
+        const ArcStatistics &s = getRacer(k).getStatistics();
+        return std::make_tuple(s.conflicts, s.solverCalls);
+    };
+    std::size_t furthest = 0;
+    for (std::size_t k = 1; k < getRacerCount(); ++k)
+        if (progress(k) > progress(furthest))
+            furthest = k;
+    return static_cast<int>(furthest);
+}
+
+const ompl_parc::PARC &ompl_parc::ORPARC::reported() const
+{
+    const int k = getReportedInstance();
+    return k >= 0 ? getRacer(k) : *prototype_;
+}
+
+const ompl_parc::MultiRobotPlan &ompl_parc::ORPARC::getPlan() const
+{
+    return race_.getWinner() >= 0 ? getRacer(race_.getWinner()).getPlan() : prototype_->getPlan();
+}
+
+const ompl_parc::ArcStatistics &ompl_parc::ORPARC::getStatistics() const
+{
+    return reported().getStatistics();
+}
+
+const ompl_parc::ParcStatistics &ompl_parc::ORPARC::getParallelStatistics() const
+{
+    return reported().getParallelStatistics();
+}
+
+const std::string &ompl_parc::ORPARC::getStatusMessage() const
+{
+    return reported().getStatusMessage();
 }
 
 void ompl_parc::ORPARC::getPlannerData(ob::PlannerData &data) const
 {
-    PARC::getPlannerData(data);
-    data.properties["instances INTEGER"] = std::to_string(instances_);
-    data.properties["winner STRING"] = winner_ ? winner_->getName() : "";
+    Planner::getPlannerData(data);
+    reported().getPlannerData(data);
+    data.properties["reported_instance INTEGER"] = std::to_string(getReportedInstance());
+    race_.addProperties(data);
 }

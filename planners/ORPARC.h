@@ -1,44 +1,84 @@
 #ifndef OMPL_PARC_PLANNERS_ORPARC_
 #define OMPL_PARC_PLANNERS_ORPARC_
 
+#include "ompl_parc/parallel/OrRace.h"
 #include "ompl_parc/planners/PARC.h"
 
 #include <memory>
-#include <vector>
 
 namespace ompl_parc
 {
     /** \brief OR-P-ARC K x W_k: K independent P-ARC instances with W_k workers each (K x W_k = W workers in
-        all), raced with OMPL's ParallelPlan; the first solution wins and stops the others, all joined before
-        solve() returns. OR-ARC is ORPARC with W_k = 1.
+        all), raced with OrRace; the first solution wins and stops the others, all joined before solve()
+        returns. OR-ARC is ORPARC with W_k = 1.
 
-        Parameters are P-ARC's (applied to every instance; \e workers is W_k) plus \e instances (K) and
-        \e total_workers (W, which must be a multiple of K and sets W_k = W / K). Instance k runs with the
-        seed mixed from the planner seed and k. After a solve, getPlan() and the statistics are the winner's. */
-    class ORPARC : public PARC
+        ORPARC wraps P-ARC instances rather than being one. Its parameters are those of a prototype P-ARC
+        (shared, so every P-ARC parameter can be set by name; \e workers is W_k) plus \e instances (K) and
+        \e total_workers (W, a multiple of K, sets W_k = W / K). The racers are created at setup() or the
+        first solve() with the prototype's values (its \e profile first, then the others, so explicit
+        values win) and the seeds mixSeed(seed, k); a later solve() continues them, clear() discards them
+        so that the next solve() uses changed parameters.
+
+        After a solve the reported instance is the winner or, if nobody won, the instance that went furthest
+        (most conflicts resolved, then most solver calls; the lowest index on a tie): getStatistics(),
+        getParallelStatistics(), getStatusMessage() and the top-level PlannerData properties are its own
+        (P-ARC's complete set, \e reported_instance says which). getPlan() is the winner's plan. The
+        PlannerData also holds \e instances, \e winner and every instance's status and properties
+        (instancek_status, instancek_conflicts, ...), so a timeout shows what each instance did. */
+    class ORPARC : public ompl::base::Planner
     {
       public:
         explicit ORPARC(const ompl::base::SpaceInformationPtr &si);
         ~ORPARC() override;
 
-        using PARC::solve;
+        using ompl::base::Planner::solve;
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
+        void setup() override;
         void clear() override;
+        void setProblemDefinition(const ompl::base::ProblemDefinitionPtr &pdef) override;
         void getPlannerData(ompl::base::PlannerData &data) const override;
 
-        /** \brief The winner's plan after a successful solve(). */
+        /** \brief The winner's plan after a successful solve() (empty otherwise). */
         const MultiRobotPlan &getPlan() const;
+        /** \brief The reported instance's statistics (all zero before a solve). */
+        const ArcStatistics &getStatistics() const;
+        const ParcStatistics &getParallelStatistics() const;
+        /** \brief Why the last solve() did not succeed, in the reported instance's words (empty after success). */
+        const std::string &getStatusMessage() const;
 
-        void setInstances(unsigned int instances);
-        unsigned int getInstances() const { return instances_; }
+        /** \brief The P-ARC whose parameters every instance gets (never solved itself). */
+        PARC &getPrototype() { return *prototype_; }
+        const PARC &getPrototype() const { return *prototype_; }
+        /** \brief The instances (empty before setup() or solve() and after clear()). */
+        std::size_t getRacerCount() const { return race_.getRacers().size(); }
+        const PARC &getRacer(std::size_t k) const;
+        /** \brief How instance \e k's last solve() ended. */
+        ompl::base::PlannerStatus getRacerStatus(std::size_t k) const { return race_.getStatus(k); }
+        /** \brief The index of the reported instance, -1 before a solve and after clear(). */
+        int getReportedInstance() const;
+
+        /** \name Declared parameters (besides the prototype's)
+            @{ */
+        void setInstances(unsigned int instances) { race_.setInstances(instances); }
+        unsigned int getInstances() const { return race_.getInstances(); }
         /** \brief Sets W_k = total / K; throws ompl::Exception unless total is a positive multiple of K. */
         void setTotalWorkers(unsigned int total);
-        unsigned int getTotalWorkers() const { return instances_ * getWorkers(); }
+        unsigned int getTotalWorkers() const { return getInstances() * getWorkers(); }
+        /** @} */
+        /** \brief W_k, the prototype's \e workers. */
+        void setWorkers(unsigned int workers) { prototype_->setWorkers(workers); }
+        unsigned int getWorkers() const { return prototype_->getWorkers(); }
+        /** \brief The prototype's \e seed; instance k runs with mixSeed(seed, k). */
+        void setSeed(unsigned int seed) { prototype_->setSeed(seed); }
+        unsigned int getSeed() const { return prototype_->getSeed(); }
 
       private:
-        unsigned int instances_{2};
-        std::vector<std::shared_ptr<PARC>> racers_;
-        std::shared_ptr<PARC> winner_;
+        void createRacers();
+        /** \brief The reported instance, or the prototype (all zero, empty plan) when there is none. */
+        const PARC &reported() const;
+
+        std::shared_ptr<PARC> prototype_;
+        OrRace race_;
     };
 }  // namespace ompl_parc
 

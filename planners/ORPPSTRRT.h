@@ -1,6 +1,7 @@
 #ifndef OMPL_PARC_PLANNERS_OR_PP_ST_RRT_
 #define OMPL_PARC_PLANNERS_OR_PP_ST_RRT_
 
+#include "ompl_parc/parallel/OrRace.h"
 #include "ompl_parc/planners/PrioritizedSTRRT.h"
 
 namespace ompl_parc
@@ -12,7 +13,8 @@ namespace ompl_parc
         where another is easy.
 
         Parameters are PrioritizedSTRRT's (applied to every instance; \e priority_order is always "shuffled")
-        plus \e instances (K). After a solve, getPlan() is the winner's plan. */
+        plus \e instances (K). Every solve() races fresh instances (OrRace). After a solve, getPlan() is the
+        winner's plan; the PlannerData holds the winner and every instance's status and properties. */
     class ORPPSTRRT : public PrioritizedSTRRT
     {
       public:
@@ -22,12 +24,11 @@ namespace ompl_parc
         void getPlannerData(ompl::base::PlannerData &data) const override;
 
         /** \brief K; throws ompl::Exception for 0. */
-        void setInstances(unsigned int instances);
-        unsigned int getInstances() const { return instances_; }
+        void setInstances(unsigned int instances) { race_.setInstances(instances); }
+        unsigned int getInstances() const { return race_.getInstances(); }
 
       private:
-        unsigned int instances_{2};
-        std::string winner_;
+        OrRace race_;
     };
 }  // namespace ompl_parc
 

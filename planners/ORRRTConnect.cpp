@@ -1,12 +1,10 @@
 #include "ompl_parc/planners/ORRRTConnect.h"
 
 #include "ompl_parc/planners/EPRRTConnect.h"
-#include "ompl_parc/util/SeededRealVectorSampler.h"
 
+#include <ompl/base/PlannerData.h>
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
-#include <ompl/tools/multiplan/ParallelPlan.h>
 #include <ompl/util/Exception.h>
-#include <ompl/util/RandomNumbers.h>
 
 namespace ob = ompl::base;
 
@@ -38,24 +36,17 @@ namespace
 }  // namespace
 
 ompl_parc::ORRRTConnect::ORRRTConnect(const ob::SpaceInformationPtr &si)
-    : ob::Planner(si, "ORRRTConnect"), mrsi_(MultiRobotSpaceInformation::get(si, "ORRRTConnect"))
+    : ob::Planner(si, "ORRRTConnect"), mrsi_(MultiRobotSpaceInformation::get(si, "ORRRTConnect")), race_(*this)
 {
     specs_.recognizedGoal = ob::GOAL_SAMPLEABLE_REGION;
     specs_.directed = true;
     specs_.multithreaded = true;
-    declareParam<unsigned int>("instances", this, &ORRRTConnect::setInstances, &ORRRTConnect::getInstances, "1:1:64");
+    race_.declareInstances(params());
     declareParam<unsigned int>("workers", this, &ORRRTConnect::setWorkers, &ORRRTConnect::getWorkers, "1:1:64");
     declareParam<unsigned int>("total_workers", this, &ORRRTConnect::setTotalWorkers, &ORRRTConnect::getTotalWorkers,
                                "1:1:64");
     declareParam<double>("range", this, &ORRRTConnect::setRange, &ORRRTConnect::getRange, "0.:1.:10000.");
     declareParam<unsigned int>("seed", this, &ORRRTConnect::setSeed, &ORRRTConnect::getSeed);
-}
-
-void ompl_parc::ORRRTConnect::setInstances(unsigned int instances)
-{
-    if (instances == 0)
-        throw ompl::Exception(getName(), "instances must be at least 1");
-    instances_ = instances;
 }
 
 void ompl_parc::ORRRTConnect::setWorkers(unsigned int workers)
@@ -67,11 +58,7 @@ void ompl_parc::ORRRTConnect::setWorkers(unsigned int workers)
 
 void ompl_parc::ORRRTConnect::setTotalWorkers(unsigned int total)
 {
-    if (total == 0 || total % instances_ != 0)
-        throw ompl::Exception(getName(), "total_workers (" + std::to_string(total) +
-                                             ") must be a positive multiple of instances (" +
-                                             std::to_string(instances_) + ")");
-    workers_ = total / instances_;
+    workers_ = race_.workersPerInstance(total);
 }
 
 void ompl_parc::ORRRTConnect::setRange(double range)
@@ -84,56 +71,34 @@ void ompl_parc::ORRRTConnect::setRange(double range)
 void ompl_parc::ORRRTConnect::clear()
 {
     Planner::clear();
-    winner_.clear();
+    race_.clear();
 }
 
 ob::PlannerStatus ompl_parc::ORRRTConnect::solve(const ob::PlannerTerminationCondition &ptc)
 {
     checkValidity();
-    winner_.clear();
-    const std::uint_fast32_t seed = seed_ != 0 ? seed_ : ompl::RNG().uniformInt(1, std::numeric_limits<int>::max());
-    // Fresh racers per solve: each run starts from empty trees with the current parameters and seed.
-    std::vector<ob::PlannerPtr> racers;
-    for (unsigned int k = 0; k < instances_; ++k)
-    {
-        ob::PlannerPtr racer;
-        if (workers_ == 1)
+    race_.createRacers(
+        [this](unsigned int, std::uint_fast32_t seed) -> ob::PlannerPtr
         {
-            auto rrtc = std::make_shared<SeededRRTConnect>(mrsi_, mixSeed(seed, k));
-            rrtc->setRange(range_);
-            racer = rrtc;
-        }
-        else
-        {
+            if (workers_ == 1)
+            {
+                auto rrtc = std::make_shared<SeededRRTConnect>(mrsi_, seed);
+                rrtc->setRange(range_);
+                return rrtc;
+            }
             auto ep = std::make_shared<EPRRTConnect>(si_);
             ep->setWorkers(workers_);
             ep->setRange(range_);
-            ep->setSeed(mixSeed(seed, k));
-            racer = ep;
-        }
-        racer->setName(getName() + "#" + std::to_string(k));
-        racer->setProblemDefinition(pdef_);
-        racers.push_back(racer);
-    }
-    ompl::tools::ParallelPlan race(pdef_);
-    for (const auto &racer : racers)
-        race.addPlanner(racer);
-    // ParallelPlan terminates the condition it is given once a racer wins: give it its own.
-    const ob::PlannerTerminationCondition raceStop([&ptc] { return ptc(); });
-    race.solve(raceStop, 1, racers.size(), false);
-    for (const auto &solution : pdef_->getSolutions())
-        if (!solution.approximate_)
-        {
-            winner_ = solution.plannerName_;
-            return ob::PlannerStatus::EXACT_SOLUTION;
-        }
-    return ob::PlannerStatus::TIMEOUT;
+            ep->setSeed(seed);
+            return ep;
+        },
+        seed_, pdef_);
+    return race_.run(ptc);
 }
 
 void ompl_parc::ORRRTConnect::getPlannerData(ob::PlannerData &data) const
 {
     Planner::getPlannerData(data);
-    data.properties["instances INTEGER"] = std::to_string(instances_);
     data.properties["workers INTEGER"] = std::to_string(workers_);
-    data.properties["winner STRING"] = winner_;
+    race_.addProperties(data);
 }

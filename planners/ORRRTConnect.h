@@ -2,16 +2,16 @@
 #define OMPL_PARC_PLANNERS_OR_RRT_CONNECT_
 
 #include "ompl_parc/model/MultiRobotSpaceInformation.h"
+#include "ompl_parc/parallel/OrRace.h"
 
 #include <ompl/base/Planner.h>
-
-#include <vector>
 
 namespace ompl_parc
 {
     /** \brief OR-EP-RRT-C K x W_k, the paper's coupled OR-parallel baselines: K independent RRT-Connect
-        instances over the composite space raced with OMPL's ParallelPlan; the first solution wins and stops
-        the others, all joined before solve() returns.
+        instances over the composite space raced with OrRace (fresh instances at every solve()); the first
+        solution wins and stops the others, all joined before solve() returns. The PlannerData holds the
+        winner and every instance's status and properties.
 
         With W_k = 1 (\e workers) the instances are OMPL's own RRTConnect (OR-RRT-C); with W_k > 1 they are
         EPRRTConnect with W_k workers each (OR-EP-RRT-C). \e total_workers (W) sets W_k = W / K and must be a
@@ -29,14 +29,14 @@ namespace ompl_parc
         void getPlannerData(ompl::base::PlannerData &data) const override;
 
         /** \brief K; throws ompl::Exception for 0. */
-        void setInstances(unsigned int instances);
-        unsigned int getInstances() const { return instances_; }
+        void setInstances(unsigned int instances) { race_.setInstances(instances); }
+        unsigned int getInstances() const { return race_.getInstances(); }
         /** \brief W_k; throws ompl::Exception for 0. */
         void setWorkers(unsigned int workers);
         unsigned int getWorkers() const { return workers_; }
         /** \brief Sets W_k = total / K; throws ompl::Exception unless total is a positive multiple of K. */
         void setTotalWorkers(unsigned int total);
-        unsigned int getTotalWorkers() const { return instances_ * workers_; }
+        unsigned int getTotalWorkers() const { return getInstances() * workers_; }
         /** \brief Every instance's range (0: OMPL's default, 20% of the space's extent). */
         void setRange(double range);
         double getRange() const { return range_; }
@@ -46,11 +46,10 @@ namespace ompl_parc
 
       private:
         MultiRobotSpaceInformationPtr mrsi_;
-        unsigned int instances_{2};
+        OrRace race_;
         unsigned int workers_{1};
         double range_{0.};
         unsigned int seed_{0};
-        std::string winner_;
     };
 }  // namespace ompl_parc
 

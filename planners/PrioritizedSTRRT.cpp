@@ -1,6 +1,7 @@
 #include "ompl_parc/planners/PrioritizedSTRRT.h"
 
 #include "ompl_parc/model/MultiRobotPlan.h"
+#include "ompl_parc/util/PlannerSeed.h"
 
 #include <ompl/base/goals/GoalState.h>
 #include <ompl/util/Exception.h>
@@ -102,7 +103,7 @@ ob::PlannerStatus ompl_parc::PrioritizedSTRRT::solve(const ob::PlannerTerminatio
         whole.starts.emplace_back(s, s + d);
         whole.goals.emplace_back(g, g + d);
     }
-    lastSeed_ = seed_ != 0 ? seed_ : static_cast<unsigned int>(rng_.uniformInt(1, std::numeric_limits<int>::max()));
+    lastSeed_ = static_cast<unsigned int>(seedOrDraw(seed_));
     Patch patch;
     solved_ = PrioritizedSTRRTSolver(settings_).solve(*mrsi_, whole, ptc, lastSeed_, patch);
     if (!solved_)

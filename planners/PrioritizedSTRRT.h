@@ -6,7 +6,6 @@
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
 
 #include <ompl/base/Planner.h>
-#include <ompl/util/RandomNumbers.h>
 
 #include <cstdint>
 #include <string>
@@ -61,7 +60,6 @@ namespace ompl_parc
         MultiRobotSpaceInformationPtr mrsi_;
         PrioritizedSTRRTSettings settings_;
         unsigned int seed_{0};
-        ompl::RNG rng_;
         unsigned int lastSeed_{0};
         bool solved_{false};
     };

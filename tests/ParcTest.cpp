@@ -200,7 +200,7 @@ TEST_P(OrParcSolves, TheWinnerIsValidated)
     const auto [scenario, robots, instances, workers] = GetParam();
     const auto problem = scenarios::createScenario(scenario, robots);
     ORPARC orparc(problem.getSpaceInformation());
-    orparc.setProfile(scenario == "planar_cross" ? "planar" : "mobile");
+    ASSERT_TRUE(orparc.params().setParam("profile", scenario == "planar_cross" ? "planar" : "mobile"));
     orparc.setInstances(instances);
     orparc.setWorkers(workers);
     orparc.setSeed(6);

@@ -45,7 +45,10 @@ namespace
         double total, initial, detection, resolution, projected;
     };
 
-    using PlannerFactory = std::function<std::shared_ptr<ArcPlannerBase>(const ompl::base::SpaceInformationPtr &)>;
+    /** \brief Allocates an ARC-family planner: an ArcPlannerBase or an ORPARC (which wraps P-ARC instances). */
+    template <typename P>
+    using PlannerFactory = std::function<std::shared_ptr<P>(const ompl::base::SpaceInformationPtr &)>;
+    using Runner = std::function<void(benchmark::State &, const std::string &, const Case &)>;
 
     std::map<std::pair<std::string, std::string>, std::vector<Run>> &results()
     {
@@ -58,7 +61,8 @@ namespace
         return c.scenario + " " + std::to_string(c.robots);
     }
 
-    void runPlanner(benchmark::State &state, const std::string &name, const PlannerFactory &factory, const Case &c)
+    template <typename P>
+    void runPlanner(benchmark::State &state, const std::string &name, const PlannerFactory<P> &factory, const Case &c)
     {
         auto &runs = results()[{label(c), name}];
         for (auto _ : state)
@@ -66,7 +70,7 @@ namespace
             const std::size_t run = runs.size() % (c.tasks * static_cast<std::size_t>(c.seeds));
             const auto problem = scenarios::createScenario(c.scenario, c.robots, 128., run % c.tasks);
             auto planner = factory(problem.getSpaceInformation());
-            planner->setProfile(c.profile);
+            planner->params().setParam("profile", c.profile);
             planner->setSeed(static_cast<unsigned int>(run / c.tasks + 1));
             planner->setProblemDefinition(problem.createProblemDefinition());
             planner->setup();
@@ -81,15 +85,22 @@ namespace
             state.SetIterationTime(seconds);
             const auto &s = planner->getStatistics();
             const auto *parc = dynamic_cast<const PARC *>(planner.get());
-            const bool projectable = parc != nullptr && dynamic_cast<const ORPARC *>(planner.get()) == nullptr;
-            const double projected = projectable ? parc->getParallelStatistics().projectedInitial +
-                                                       parc->getParallelStatistics().projectedDetection +
-                                                       parc->getParallelStatistics().projectedResolution
-                                                 : -1.;
+            const double projected = parc != nullptr ? parc->getParallelStatistics().projectedInitial +
+                                                           parc->getParallelStatistics().projectedDetection +
+                                                           parc->getParallelStatistics().projectedResolution
+                                                     : -1.;
             runs.push_back({seconds, s.initialWall, s.detectionWall, s.resolutionWall, projected});
             state.counters["conflicts"] = s.conflicts;
             state.counters["makespan"] = static_cast<double>(planner->getPlan().getMakespan());
         }
+    }
+
+    /** \brief runPlanner with the planners of \e factory. */
+    template <typename P>
+    Runner runnerOf(PlannerFactory<P> factory)
+    {
+        return [factory](benchmark::State &state, const std::string &name, const Case &c)
+        { runPlanner(state, name, factory, c); };
     }
 
     double median(std::vector<double> v)
@@ -150,30 +161,31 @@ int main(int argc, char **argv)
                                      {"panda_cage", 4, "panda", 5, 2}};
     const auto parc = [](unsigned int workers)
     {
-        return [workers](const ompl::base::SpaceInformationPtr &si)
-        {
-            auto p = std::make_shared<PARC>(si);
-            p->setWorkers(workers);
-            return std::static_pointer_cast<ArcPlannerBase>(p);
-        };
+        return runnerOf<ArcPlannerBase>(
+            [workers](const ompl::base::SpaceInformationPtr &si)
+            {
+                auto p = std::make_shared<PARC>(si);
+                p->setWorkers(workers);
+                return p;
+            });
     };
-    const std::vector<std::pair<std::string, PlannerFactory>> planners = {
-        {"ARC", [](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<ARC>(si); }},
+    const std::vector<std::pair<std::string, Runner>> planners = {
+        {"ARC",
+         runnerOf<ArcPlannerBase>([](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<ARC>(si); })},
         {"P-ARC-2", parc(2)},
-        {"OR-P-ARC-2x1",
-         [](const ompl::base::SpaceInformationPtr &si)
-         {
-             auto p = std::make_shared<ORPARC>(si);
-             p->setInstances(2);
-             p->setWorkers(1);
-             return std::static_pointer_cast<ArcPlannerBase>(p);
-         }},
+        {"OR-P-ARC-2x1", runnerOf<ORPARC>(
+                             [](const ompl::base::SpaceInformationPtr &si)
+                             {
+                                 auto p = std::make_shared<ORPARC>(si);
+                                 p->setInstances(2);
+                                 p->setWorkers(1);
+                                 return p;
+                             })},
         {"P-ARC-16", parc(16)}};
     for (const auto &c : cases)
-        for (const auto &[name, factory] : planners)
+        for (const auto &[name, run] : planners)
             benchmark::RegisterBenchmark((name + "/" + c.scenario + "/" + std::to_string(c.robots)).c_str(),
-                                         [name = name, factory = factory, c](benchmark::State &state)
-                                         { runPlanner(state, name, factory, c); })
+                                         [name = name, run = run, c](benchmark::State &state) { run(state, name, c); })
                 ->Iterations(1)
                 ->Repetitions(static_cast<int>(c.tasks) * c.seeds)
                 ->UseManualTime()
