@@ -43,6 +43,7 @@ void ompl_parc::Environment::addObstacle(const Obstacle &obstacle)
     object->computeAABB();
     obstacles_.push_back(obstacle);
     objects_.push_back(std::move(object));
+    primitives_.add(obstacle);
 }
 
 void ompl_parc::Environment::addBox2D(const std::string &name, double centerX, double centerY, double sizeX,
@@ -56,7 +57,7 @@ void ompl_parc::Environment::addBox2D(const std::string &name, double centerX, d
     addObstacle(o);
 }
 
-bool ompl_parc::Environment::collides(const CollisionBody &body) const
+bool ompl_parc::Environment::collidesFcl(const CollisionBody &body) const
 {
     if (objects_.empty())
         return false;

@@ -2,6 +2,8 @@
 #define OMPL_PARC_ENVIRONMENT_
 
 #include "ompl_parc/collision/CollisionBody.h"
+#include "ompl_parc/collision/Obstacle.h"
+#include "ompl_parc/collision/ObstacleSet.h"
 
 #include <Eigen/Geometry>
 #include <fcl/geometry/collision_geometry.h>
@@ -13,26 +15,14 @@
 
 namespace ompl_parc
 {
-    /** \brief A static obstacle: a box (size = full extents), sphere (size.x = radius) or cylinder
-        (size.x = radius, size.z = length along its local z axis), placed by a pose. */
-    struct Obstacle
-    {
-        enum class Shape
-        {
-            BOX,
-            SPHERE,
-            CYLINDER
-        };
-        std::string name;
-        Shape shape{Shape::BOX};
-        Eigen::Vector3d size{Eigen::Vector3d::Zero()};
-        Eigen::Isometry3d pose{Eigen::Isometry3d::Identity()};
-    };
+    /** \brief The static world all robots share.
 
-    /** \brief The static world all robots share, checked exactly with FCL.
-
-        Robots are tested through their CollisionBody (capsules), converted to FCL capsules and spheres;
-        an AABB test skips obstacles that are far away. All queries are const and thread safe. */
+        Robots are tested through their CollisionBody (capsules). Planning asks collides(): analytic,
+        conservative primitive distances on flat arrays (ObstacleSet), no FCL and no allocation. collidesFcl()
+        and findCollision() convert the capsules to FCL capsules and spheres and ask FCL exactly (an AABB test
+        skips far obstacles): the reference the analytic test is checked against, and the test that names the
+        obstacle for error messages. Every Obstacle shape is a primitive; a shape without an analytic test (a
+        mesh) would have to go through FCL. All queries are const and thread safe. */
     class Environment
     {
       public:
@@ -51,8 +41,12 @@ namespace ompl_parc
         /** \brief A new FCL geometry for \e obstacle (in its local frame). */
         static std::shared_ptr<fcl::CollisionGeometryd> createGeometry(const Obstacle &obstacle);
 
-        /** \brief True if any capsule of \e body touches any obstacle. */
-        bool collides(const CollisionBody &body) const;
+        /** \brief True if any capsule of \e body touches any obstacle, or comes within ObstacleSet::MARGIN of
+            one, or passes the rim of a cylinder closely: conservative, never false where collidesFcl() is true. */
+        bool collides(const CollisionBody &body) const { return primitives_.collides(body); }
+
+        /** \brief True if any capsule of \e body touches any obstacle, according to FCL (exact). */
+        bool collidesFcl(const CollisionBody &body) const;
 
         /** \brief The first obstacle capsule \e capsule of \e body touches, or nullptr: lets error messages
             name the obstacle, where planning only needs collides(). */
@@ -61,6 +55,7 @@ namespace ompl_parc
       private:
         std::vector<Obstacle> obstacles_;
         std::vector<std::shared_ptr<fcl::CollisionObjectd>> objects_;
+        ObstacleSet primitives_;
     };
 
     using EnvironmentPtr = std::shared_ptr<Environment>;

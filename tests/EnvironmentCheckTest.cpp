@@ -1,0 +1,149 @@
+/* The analytic robot-environment test (Environment::collides, ObstacleSet) against FCL (collidesFcl), the exact
+   reference: over many random configurations of each robot kind it never misses a collision FCL reports; the
+   false-positive rate is printed and recorded. Also the segment-box distance against a dense scan. */
+#include "ompl_parc/collision/PrimitiveDistance.h"
+#include "ompl_parc/robots/DiscRobot.h"
+#include "ompl_parc/robots/PlanarArm.h"
+#include "ompl_parc/scenarios/PandaCage.h"
+
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <random>
+
+using namespace ompl_parc;
+namespace ob = ompl::base;
+
+namespace
+{
+#ifdef OMPL_PARC_SANITIZED
+    constexpr std::size_t SAMPLES = 20000;  // FCL's share is not instrumented, ours is: keep the ASan run short
+#else
+    constexpr std::size_t SAMPLES = 100000;
+#endif
+
+    /** Boxes (rotated footprints), upright and lying cylinders and spheres around the plane z = 0. */
+    EnvironmentPtr mixedWorld()
+    {
+        auto env = std::make_shared<Environment>();
+        std::mt19937 rng(7);
+        std::uniform_real_distribution<double> position(-4., 4.), angle(-M_PI, M_PI);
+        for (int k = 0; k < 8; ++k)
+            env->addBox2D("box" + std::to_string(k), position(rng), position(rng),
+                          std::uniform_real_distribution<double>(0.1, 1.5)(rng),
+                          std::uniform_real_distribution<double>(0.1, 1.5)(rng), angle(rng));
+        for (int k = 0; k < 8; ++k)
+        {
+            Obstacle o;
+            o.name = "cylinder" + std::to_string(k);
+            o.shape = Obstacle::Shape::CYLINDER;
+            o.size = Eigen::Vector3d(std::uniform_real_distribution<double>(0.05, 0.5)(rng), 0.,
+                                     std::uniform_real_distribution<double>(0.5, 3.)(rng));
+            // Half upright (walls seen from above), half lying across the plane at a random height and heading.
+            o.pose = Eigen::Translation3d(position(rng), position(rng),
+                                          k % 2 == 0 ? 0. : std::uniform_real_distribution<double>(-0.4, 0.4)(rng)) *
+                     Eigen::AngleAxisd(angle(rng), Eigen::Vector3d::UnitZ()) *
+                     Eigen::AngleAxisd(k % 2 == 0 ? 0. : M_PI / 2., Eigen::Vector3d::UnitX());
+            env->addObstacle(o);
+        }
+        for (int k = 0; k < 4; ++k)
+        {
+            Obstacle o;
+            o.name = "sphere" + std::to_string(k);
+            o.shape = Obstacle::Shape::SPHERE;
+            o.size.x() = std::uniform_real_distribution<double>(0.1, 0.8)(rng);
+            o.pose.translation() =
+                Eigen::Vector3d(position(rng), position(rng), std::uniform_real_distribution<double>(-0.3, 0.3)(rng));
+            env->addObstacle(o);
+        }
+        return env;
+    }
+
+    /** Random configurations of \e robot in its bounds: no FCL collision missed; prints the rates. */
+    void expectConservative(const Robot &robot, const std::string &label)
+    {
+        std::mt19937 rng(1);
+        std::vector<double> q(robot.getDimension());
+        CollisionBody body;
+        std::size_t missed = 0, fclHits = 0, falsePositives = 0;
+        for (std::size_t s = 0; s < SAMPLES; ++s)
+        {
+            for (unsigned int d = 0; d < q.size(); ++d)
+                q[d] = std::uniform_real_distribution<double>(robot.getBounds().low[d], robot.getBounds().high[d])(rng);
+            robot.computeBody(q.data(), body);
+            const bool exact = robot.getEnvironment()->collidesFcl(body), ours = robot.getEnvironment()->collides(body);
+            fclHits += exact ? 1 : 0;
+            missed += exact && !ours ? 1 : 0;
+            falsePositives += !exact && ours ? 1 : 0;
+        }
+        EXPECT_EQ(missed, 0u) << label;
+        EXPECT_GT(fclHits, SAMPLES / 100) << label << ": too few collisions to test anything";
+        EXPECT_LT(fclHits, SAMPLES - SAMPLES / 100) << label << ": too few free configurations";
+        const double rate = double(falsePositives) / double(SAMPLES - fclHits);
+        std::cout << "[          ] " << label << ": " << SAMPLES << " configurations, " << fclHits
+                  << " in collision (FCL), missed " << missed << ", false positives " << falsePositives << " ("
+                  << 100. * rate << " % of the free ones)\n";
+        ::testing::Test::RecordProperty(label + "_false_positive_rate", std::to_string(rate));
+    }
+}  // namespace
+
+TEST(EnvironmentCheck, SegmentBoxDistanceMatchesADenseScan)
+{
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(-2., 2.), h(0.05, 1.);
+    constexpr int STEPS = 20000;
+    for (int trial = 0; trial < 500; ++trial)
+    {
+        double p[3], d[3], half[3];
+        for (int k = 0; k < 3; ++k)
+        {
+            p[k] = u(rng);
+            d[k] = trial % 10 == 0 && k == 1 ? 0. : u(rng);  // some axis-parallel segments
+            half[k] = h(rng);
+        }
+        const double exact = std::sqrt(segmentBoxDistanceSquared(p, d, half));
+        double scanned = INFINITY;
+        for (int s = 0; s <= STEPS; ++s)
+        {
+            const double t = double(s) / STEPS;
+            double d2 = 0.;
+            for (int k = 0; k < 3; ++k)
+            {
+                const double x = p[k] + t * d[k], e = x - std::min(std::max(x, -half[k]), half[k]);
+                d2 += e * e;
+            }
+            scanned = std::min(scanned, std::sqrt(d2));
+        }
+        const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        EXPECT_LE(exact, scanned + 1e-12);
+        EXPECT_LE(scanned, exact + 0.5 * length / STEPS + 1e-12);
+    }
+}
+
+TEST(EnvironmentCheck, DiscNeverMissesAnFclCollision)
+{
+    ob::RealVectorBounds bounds(2);
+    bounds.setLow(-5.);
+    bounds.setHigh(5.);
+    DiscRobot robot("disc", mixedWorld(), 0.3, bounds);
+    expectConservative(robot, "disc");
+}
+
+TEST(EnvironmentCheck, PlanarArmNeverMissesAnFclCollision)
+{
+    ob::RealVectorBounds limits(3);
+    limits.setLow(-M_PI);
+    limits.setHigh(M_PI);
+    PlanarArm robot("arm", mixedWorld(), 0.5, -0.5, 0., {1.2, 1., 0.8}, 0.2, limits);
+    expectConservative(robot, "planar_arm");
+}
+
+TEST(EnvironmentCheck, PandaInTheCageNeverMissesAnFclCollision)
+{
+    const MultiRobotProblem problem = scenarios::createPandaCage(8, 0);
+    expectConservative(*problem.getSpaceInformation()->getRobot(0), "panda_cage");
+}
