@@ -1,11 +1,14 @@
 /* The analytic robot-environment test (Environment::collides, ObstacleSet) against FCL (collidesFcl), the exact
    reference: over many random configurations of each robot kind it never misses a collision FCL reports; the
-   false-positive rate is printed and recorded. Also the segment-box distance against a dense scan. */
+   false-positive rate is printed and recorded. Also the segment-box distance against a dense scan, and the
+   motion validator's sample set against OMPL's. */
 #include "ompl_parc/collision/PrimitiveDistance.h"
 #include "ompl_parc/robots/DiscRobot.h"
 #include "ompl_parc/robots/PlanarArm.h"
+#include "ompl_parc/robots/RakeMotionValidator.h"
 #include "ompl_parc/scenarios/PandaCage.h"
 
+#include <ompl/base/ScopedState.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 
 #include <gtest/gtest.h>
@@ -146,4 +149,63 @@ TEST(EnvironmentCheck, PandaInTheCageNeverMissesAnFclCollision)
 {
     const MultiRobotProblem problem = scenarios::createPandaCage(8, 0);
     expectConservative(*problem.getSpaceInformation()->getRobot(0), "panda_cage");
+}
+
+TEST(EnvironmentCheck, RakeChecksDiscreteMotionValidatorsSamplesFarApartFirst)
+{
+    auto space = std::make_shared<ob::RealVectorStateSpace>(1);
+    space->setBounds(0., 1.);
+    auto si = std::make_shared<ob::SpaceInformation>(space);
+    std::vector<double> checked;
+    si->setStateValidityChecker(
+        [&checked](const ob::State *state)
+        {
+            checked.push_back(state->as<ob::RealVectorStateSpace::StateType>()->values[0]);
+            return true;
+        });
+    si->setStateValidityCheckingResolution(1. / 36.5);  // 37 segments over the whole extent
+    si->setup();
+    ob::ScopedState<ob::RealVectorStateSpace> from(space), to(space);
+    from[0] = 0.;
+    to[0] = 1.;
+    ob::DiscreteMotionValidator discrete(si.get());
+    RakeMotionValidator rake(si.get());
+    ASSERT_TRUE(discrete.checkMotion(from.get(), to.get()));
+    std::vector<double> reference = checked;
+    checked.clear();
+    ASSERT_TRUE(rake.checkMotion(from.get(), to.get()));
+    ASSERT_EQ(checked.size(), 37u);  // the end state and 36 inner samples
+    EXPECT_EQ(checked[0], 1.);
+    EXPECT_DOUBLE_EQ(checked[1], 32. / 37.);  // the largest power-of-two stride below 37 first
+    EXPECT_DOUBLE_EQ(checked[2], 16. / 37.);
+    std::sort(reference.begin(), reference.end());
+    std::sort(checked.begin(), checked.end());
+    EXPECT_EQ(checked, reference);  // the same sample set, bit for bit
+
+    // A wall in the middle: the rake rejects the motion after a few samples.
+    checked.clear();
+    si->setStateValidityChecker(
+        [&checked](const ob::State *state)
+        {
+            const double x = state->as<ob::RealVectorStateSpace::StateType>()->values[0];
+            checked.push_back(x);
+            return std::abs(x - 0.45) > 0.02;
+        });
+    EXPECT_FALSE(rake.checkMotion(from.get(), to.get()));
+    EXPECT_LT(checked.size(), 10u);
+    std::pair<ob::State *, double> lastValid{si->allocState(), 0.};
+    EXPECT_FALSE(rake.checkMotion(from.get(), to.get(), lastValid));  // OMPL's sequential contract
+    EXPECT_DOUBLE_EQ(lastValid.second, 15. / 37.);
+    EXPECT_DOUBLE_EQ(lastValid.first->as<ob::RealVectorStateSpace::StateType>()->values[0], 15. / 37.);
+    si->freeState(lastValid.first);
+}
+
+TEST(EnvironmentCheck, RobotSpacesUseTheRake)
+{
+    const MultiRobotProblem problem = scenarios::createPandaCage(8, 0);
+    const auto &si = problem.getSpaceInformation();
+    EXPECT_NE(std::dynamic_pointer_cast<RakeMotionValidator>(si->getMotionValidator()), nullptr);
+    EXPECT_NE(
+        std::dynamic_pointer_cast<RakeMotionValidator>(si->getRobot(0)->getSpaceInformation()->getMotionValidator()),
+        nullptr);
 }

@@ -2,6 +2,7 @@
 
 #include "ompl_parc/collision/CapsuleCollision.h"
 #include "ompl_parc/model/MultiRobotValidityChecker.h"
+#include "ompl_parc/robots/RakeMotionValidator.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
@@ -75,6 +76,7 @@ ompl_parc::MultiRobotSpaceInformation::MultiRobotSpaceInformation(std::vector<Ro
       resolution_(resolution)
 {
     setStateValidityChecker(std::make_shared<MultiRobotValidityChecker>(this, robots_));
+    setMotionValidator(std::make_shared<RakeMotionValidator>(this));
     setup();
 }
 

@@ -1,6 +1,7 @@
 #include "ompl_parc/robots/Robot.h"
 
 #include "ompl_parc/collision/CapsuleCollision.h"
+#include "ompl_parc/robots/RakeMotionValidator.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/util/Exception.h>
@@ -25,6 +26,7 @@ ompl_parc::Robot::Robot(std::string name, EnvironmentPtr environment, const ob::
     space->setName(name_);
     si_ = std::make_shared<ob::SpaceInformation>(space);
     si_->setStateValidityChecker([this](const ob::State *state) { return isValid(state); });
+    si_->setMotionValidator(std::make_shared<RakeMotionValidator>(si_.get()));
     setResolution(128.);
 }
 
