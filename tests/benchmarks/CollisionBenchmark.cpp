@@ -1,15 +1,50 @@
 /* Robot-robot pair checks per second: discs (Mobile Cross) and 3-link planar arms (Planar Cross).
    "Bodies" benchmarks test precomputed bodies (the conflict scan's inner loop); "Configs" ones include
    forward kinematics of both robots, as MultiRobotSpaceInformation::robotsCollide() does. The FCL
-   variant runs FCL's narrow phase on the same capsule pairs, for comparison. */
+   variant runs FCL's narrow phase on the same capsule pairs, for comparison.
+
+   Robot-environment checks, side by side on the same 10 000 random configurations: a Panda of Panda Cage 8
+   against the cage's 12 bars and a disc of Warehouse Aisle against its shelves and pillar, the analytic test
+   (Environment::collides) against FCL (Environment::collidesFcl). "Env" variants check precomputed bodies;
+   "Validity" ones the whole state check: Robot::isValid against the same steps with FCL (body,
+   self-collision, environment; the bounds test, which only isValid does, is a few comparisons). allocs_per_check counts
+   heap allocations inside the timed loop (this file replaces the global operator new to count them). */
 #include "ompl_parc/collision/CapsuleCollision.h"
+#include "ompl_parc/io/ScenarioFile.h"
+#include "ompl_parc/scenarios/PandaCage.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 
 #include <benchmark/benchmark.h>
 #include <fcl/geometry/shape/capsule.h>
 #include <fcl/narrowphase/collision.h>
 
+#include <atomic>
+#include <cstdlib>
+#include <new>
 #include <random>
+
+namespace
+{
+    std::atomic<std::size_t> allocations{0};
+}  // namespace
+
+void *operator new(std::size_t size)
+{
+    allocations.fetch_add(1, std::memory_order_relaxed);
+    if (void *p = std::malloc(size == 0 ? 1 : size))
+        return p;
+    throw std::bad_alloc();
+}
+
+void operator delete(void *p) noexcept
+{
+    std::free(p);
+}
+
+void operator delete(void *p, std::size_t) noexcept
+{
+    std::free(p);
+}
 
 using namespace ompl_parc;
 
@@ -127,3 +162,87 @@ BENCHMARK_CAPTURE(configs, Disc, std::string("mobile_cross"));
 BENCHMARK_CAPTURE(configs, PlanarArm3, std::string("planar_cross"));
 BENCHMARK_CAPTURE(fclBodies, Disc, std::string("mobile_cross"));
 BENCHMARK_CAPTURE(fclBodies, PlanarArm3, std::string("planar_cross"));
+
+namespace
+{
+    constexpr std::size_t CONFIGS = 10000;
+
+    /** CONFIGS random configurations of one robot of a problem in its bounds, and their bodies. */
+    struct ConfigSet
+    {
+        MultiRobotProblem problem;
+        std::vector<std::vector<double>> q;
+        std::vector<CollisionBody> bodies;
+
+        explicit ConfigSet(MultiRobotProblem p) : problem(std::move(p))
+        {
+            const Robot &r = robot();
+            std::mt19937 rng(1);
+            for (std::size_t k = 0; k < CONFIGS; ++k)
+            {
+                q.push_back(PairSet::sample(r, rng));
+                bodies.emplace_back();
+                r.computeBody(q.back().data(), bodies.back());
+            }
+        }
+
+        const Robot &robot() const { return *problem.getSpaceInformation()->getRobot(0); }
+    };
+
+    const ConfigSet &configSet(const std::string &kind)
+    {
+        static const ConfigSet panda(scenarios::createPandaCage(8, 0)),
+            disc(ScenarioFile::read(std::string(OMPL_PARC_SCENARIO_DIR) + "/warehouse_aisle.json"));
+        return kind == "panda" ? panda : disc;
+    }
+
+    /** The environment test alone, on precomputed bodies. */
+    void env(benchmark::State &state, const std::string &kind, bool fcl)
+    {
+        const ConfigSet &set = configSet(kind);
+        const Environment &environment = *set.robot().getEnvironment();
+        std::size_t k = 0, hits = 0;
+        const std::size_t before = allocations.load();
+        for (auto _ : state)
+        {
+            hits += (fcl ? environment.collidesFcl(set.bodies[k]) : environment.collides(set.bodies[k])) ? 1 : 0;
+            k = (k + 1) % CONFIGS;
+        }
+        state.SetItemsProcessed(state.iterations());
+        state.counters["collision_fraction"] = double(hits) / double(state.iterations());
+        state.counters["allocs_per_check"] = double(allocations.load() - before) / double(state.iterations());
+    }
+
+    /** The whole state check: Robot::isValid, or its steps with FCL for the environment. */
+    void validity(benchmark::State &state, const std::string &kind, bool fcl)
+    {
+        const ConfigSet &set = configSet(kind);
+        const Robot &robot = set.robot();
+        const Environment &environment = *robot.getEnvironment();
+        CollisionBody body;
+        const auto fclValid = [&](const double *q)  // the configurations are in bounds
+        {
+            robot.computeBody(q, body);
+            return !robot.selfCollides(body) && !environment.collidesFcl(body);
+        };
+        std::size_t k = 0, valid = 0;
+        const std::size_t before = allocations.load();
+        for (auto _ : state)
+        {
+            valid += (fcl ? fclValid(set.q[k].data()) : robot.isValid(set.q[k].data())) ? 1 : 0;
+            k = (k + 1) % CONFIGS;
+        }
+        state.SetItemsProcessed(state.iterations());
+        state.counters["valid_fraction"] = double(valid) / double(state.iterations());
+        state.counters["allocs_per_check"] = double(allocations.load() - before) / double(state.iterations());
+    }
+}  // namespace
+
+BENCHMARK_CAPTURE(env, PandaCage_Analytic, std::string("panda"), false);
+BENCHMARK_CAPTURE(env, PandaCage_FCL, std::string("panda"), true);
+BENCHMARK_CAPTURE(validity, PandaCage_Analytic, std::string("panda"), false);
+BENCHMARK_CAPTURE(validity, PandaCage_FCL, std::string("panda"), true);
+BENCHMARK_CAPTURE(env, DiscWarehouse_Analytic, std::string("disc"), false);
+BENCHMARK_CAPTURE(env, DiscWarehouse_FCL, std::string("disc"), true);
+BENCHMARK_CAPTURE(validity, DiscWarehouse_Analytic, std::string("disc"), false);
+BENCHMARK_CAPTURE(validity, DiscWarehouse_FCL, std::string("disc"), true);

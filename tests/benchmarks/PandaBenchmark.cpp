@@ -2,7 +2,12 @@
    (per primitive pair an AABB test, then FCL's narrow phase: UrdfFclModel), on the same random configuration
    pairs of two facing Pandas (the layout of tests/PandaCollisionTest.cpp). "Configs" variants include the
    forward kinematics of both arms; "Placed" ones check precomputed bodies / placed FCL objects, as the
-   conflict scan does (it computes each robot's body once per timestep for all its pairs). */
+   conflict scan does (it computes each robot's body once per timestep for all its pairs).
+
+   PandaRRTConnect: one Panda alone in the cage, start and goal of Panda Cage 8 task 0, planned as ARC's first
+   stage does (InitialPlanner: RRT-Connect, then optionally OMPL's simplifier with the authors' bounded effort);
+   iteration i plans robot i mod 8 with seed i + 1; median_ms is the median over the iterations. */
+#include "ompl_parc/arc/InitialPlanner.h"
 #include "ompl_parc/collision/CapsuleCollision.h"
 #include "ompl_parc/robots/BuiltinModels.h"
 #include "ompl_parc/robots/UrdfFclModel.h"
@@ -10,6 +15,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <chrono>
 #include <random>
 
 using namespace ompl_parc;
@@ -127,4 +134,31 @@ namespace
         state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
     }
     BENCHMARK(BM_PandaPairFclPlaced)->Name("PandaPair/FCL/Placed");
+
+    void BM_PandaRRTConnect(benchmark::State &state, bool simplify)
+    {
+        static const MultiRobotProblem problem = scenarios::createPandaCage(8, 0);
+        const InitialPlanner planner(problem, simplify);
+        std::vector<double> path, milliseconds;
+        std::size_t i = 0, solved = 0;
+        for (auto _ : state)
+        {
+            const auto start = std::chrono::steady_clock::now();
+            solved += planner.plan(i % 8, ompl::base::timedPlannerTerminationCondition(10.), i + 1, path) ? 1 : 0;
+            milliseconds.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+            ++i;
+        }
+        std::nth_element(milliseconds.begin(), milliseconds.begin() + milliseconds.size() / 2, milliseconds.end());
+        state.counters["median_ms"] = milliseconds[milliseconds.size() / 2];
+        state.counters["solved_fraction"] = double(solved) / double(i);
+    }
+    BENCHMARK_CAPTURE(BM_PandaRRTConnect, Simplified, true)
+        ->Name("PandaRRTConnect/Simplified")
+        ->Iterations(40)
+        ->Unit(benchmark::kMillisecond);
+    BENCHMARK_CAPTURE(BM_PandaRRTConnect, Raw, false)
+        ->Name("PandaRRTConnect/Raw")
+        ->Iterations(40)
+        ->Unit(benchmark::kMillisecond);
 }  // namespace
