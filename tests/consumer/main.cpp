@@ -23,7 +23,7 @@ int main()
     plane->setBounds(-1., 1.);
     const auto spaceTime = std::make_shared<ompl::base::SpaceInformation>(
         std::make_shared<ompl_parc::spacetime::SpaceTimeStateSpace>(plane));
-    spaceTime->setStateValidityAlwaysValid();
+    spaceTime->setStateValidityChecker([](const ompl::base::State *) { return true; });
     spaceTime->setup();
     ompl_parc::spacetime::STRRTstar planner(spaceTime);
     std::cout << "consumer: " << planner.getName() << " over "
