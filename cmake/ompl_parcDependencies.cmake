@@ -10,8 +10,8 @@ find_dependency(urdfdom)
 find_dependency(nlohmann_json)
 find_dependency(Boost COMPONENTS program_options serialization filesystem system)
 # The installed config sets OMPL_PARC_OMPL_VERSION and OMPL_PARC_OMPL_DIR to the OMPL the library was built
-# with: that exact version, looked for first where it was then (a system OMPL of another version is passed
-# over); without a known version, only that folder. The build itself takes the OMPL CMAKE_PREFIX_PATH gives.
+# with: that exact version, also looked for where it was then (an OMPL of another version, e.g. the system's, is
+# passed over); without a known version, only that folder. The build itself takes the OMPL CMAKE_PREFIX_PATH gives.
 if(OMPL_PARC_OMPL_VERSION)
     find_dependency(ompl ${OMPL_PARC_OMPL_VERSION} EXACT HINTS "${OMPL_PARC_OMPL_DIR}")
 elseif(OMPL_PARC_OMPL_DIR)
