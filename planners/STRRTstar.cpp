@@ -9,18 +9,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
 
 ompl_parc::STRRTstar::STRRTstar(const ob::SpaceInformationPtr &si) : ob::Planner(si, "STRRTstar")
 {
-    space_ = dynamic_cast<const SpaceTimeStateSpace *>(si->getStateSpace().get());
+    space_ = dynamic_cast<spacetime::SpaceTimeStateSpace *>(si->getStateSpace().get());
     if (space_ == nullptr)
-        throw ompl::Exception(getName(), "needs an ompl_parc::SpaceTimeStateSpace (a robot space x time), got '" +
+        throw ompl::Exception(getName(), "needs a SpaceTimeStateSpace (a robot space x time), got '" +
                                              si->getStateSpace()->getName() + "'");
     specs_.optimizingPaths = true;
     specs_.directed = true;
+    specs_.canReportIntermediateSolutions = true;
     declareParam<double>("range", this, &STRRTstar::setRange, &STRRTstar::getRange, "0.:1.:10000.");
     declareParam<std::string>("rewiring", this, &STRRTstar::setRewiringState, &STRRTstar::getRewiringState);
     declareParam<double>("rewire_factor", this, &STRRTstar::setRewireFactor, &STRRTstar::getRewireFactor,
@@ -92,10 +94,9 @@ void ompl_parc::STRRTstar::setTimeBoundFactorIncrease(double factor)
 void ompl_parc::STRRTstar::setup()
 {
     Planner::setup();
-    auto *space = si_->getStateSpace()->as<SpaceTimeStateSpace>();
-    space->updateEpsilon();
+    space_->updateEpsilon();
     if (maxDistance_ <= 0.)
-        maxDistance_ = 0.2 * space->getSpaceComponent()->getMaximumExtent();
+        maxDistance_ = 0.2 * space_->getSpaceComponent()->getMaximumExtent();
     const auto distance = [this](const Motion *a, const Motion *b) { return si_->distance(a->state, b->state); };
     // Space-time distances are not a metric (they can be infinite), so only linear search is exact.
     for (Tree *tree : {&tStart_, &tGoal_})
@@ -104,7 +105,7 @@ void ompl_parc::STRRTstar::setup()
             tree->reset(new ompl::NearestNeighborsLinear<Motion *>());
         (*tree)->setDistanceFunction(distance);
     }
-    spaceSampler_ = space->getSpaceComponent()->allocStateSampler();
+    spaceSampler_ = space_->getSpaceComponent()->allocStateSampler();
 }
 
 void ompl_parc::STRRTstar::freeMemory()
@@ -146,7 +147,7 @@ ompl_parc::STRRTstar::Motion *ompl_parc::STRRTstar::newMotion(const ob::State *s
 
 bool ompl_parc::STRRTstar::motionValid(const ob::State *from, const ob::State *to) const
 {
-    return SpaceTimeStateSpace::getStateTime(to) > SpaceTimeStateSpace::getStateTime(from) &&
+    return spacetime::SpaceTimeStateSpace::getStateTime(to) > spacetime::SpaceTimeStateSpace::getStateTime(from) &&
            si_->checkMotion(from, to);
 }
 
@@ -154,7 +155,7 @@ ompl_parc::STRRTstar::Motion *ompl_parc::STRRTstar::growSingle(Tree &tree, bool 
                                                                const ob::State *target, bool &reached)
 {
     // The start tree grows forward in time, the goal tree backward.
-    if (startTree != (timeOf(near) < SpaceTimeStateSpace::getStateTime(target)))
+    if (startTree != (timeOf(near) < spacetime::SpaceTimeStateSpace::getStateTime(target)))
         return nullptr;
     const ob::State *step = target;
     const double d = si_->distance(near->state, target);
@@ -365,6 +366,8 @@ bool ompl_parc::STRRTstar::recordSolution(const Motion *startSide, const Motion 
         bestPath_.push_back(m->state);
     bestTime_ = arrival;
     ++solutions_;
+    if (const auto &callback = pdef_->getIntermediateSolutionCallback())
+        callback(this, bestPath_, ob::Cost(bestTime_));
     // Only earlier arrivals are of interest from now on.
     timeBounded_ = true;
     upperTimeBound_ = arrival;
@@ -486,8 +489,10 @@ ob::PlannerStatus ompl_parc::STRRTstar::solve(const ob::PlannerTerminationCondit
             startSide = startSide->parent;
         else
             goalSide = goalSide->parent;
+        // No arrival beats the least duration (up to the round-off the space's speed test allows).
         if (recordSolution(startSide, goalSide) &&
-            (stopAtFirstSolution_ || bestTime_ - startTime_ <= minimumDuration_ + space_->getEpsilon()))
+            (stopAtFirstSolution_ ||
+             bestTime_ - startTime_ <= minimumDuration_ * (1. + std::numeric_limits<float>::epsilon())))
             break;
     }
     si_->freeState(sample);

@@ -1,7 +1,7 @@
 #ifndef OMPL_PARC_PLANNERS_STRRT_STAR_
 #define OMPL_PARC_PLANNERS_STRRT_STAR_
 
-#include "ompl_parc/statespaces/SpaceTimeStateSpace.h"
+#include "ompl_parc/spacetime/SpaceTimeStateSpace.h"
 
 #include <ompl/base/Planner.h>
 #include <ompl/base/StateSampler.h>
@@ -27,12 +27,14 @@ namespace ompl_parc
         reach a goal. Rewiring (off, radius or k-nearest) picks the parent among a neighbourhood and re-parents
         goal-tree neighbours whose goal is reached earlier through a new vertex.
 
-        OMPL 1.5 lacks this planner (OMPL >= 1.6 has ompl::geometric::STRRTstar; see statespaces/SpaceTime.h);
+        OMPL 1.5 lacks this planner (OMPL >= 1.6 has ompl::geometric::STRRTstar; see planners/SpaceTime.h);
         this is our implementation with the same parameters, plus two extensions for prioritised planning: a
         minimum goal time (a goal counts only from then on, so a robot can hold its goal safely) and stopping
         at the first solution. After a solution it keeps searching, until the termination condition, only
-        for earlier arrivals (no tree pruning). Needs a SpaceTimeStateSpace (throws ompl::Exception
-        otherwise) and a goal that can be sampled; goal samples get their time from the planner. */
+        for earlier arrivals (no tree pruning), and reports each solution to the problem definition's
+        intermediate solution callback. Needs the space-time state space in use
+        (spacetime::SpaceTimeStateSpace, OMPL's from OMPL 1.6 on; throws ompl::Exception otherwise) and a goal
+        that can be sampled; goal samples get their time from the planner. */
     class STRRTstar : public ompl::base::Planner
     {
       public:
@@ -108,7 +110,10 @@ namespace ompl_parc
         using Tree = std::shared_ptr<ompl::NearestNeighbors<Motion *>>;
 
         /** \brief Time of a vertex's state. */
-        static double timeOf(const Motion *motion) { return SpaceTimeStateSpace::getStateTime(motion->state); }
+        static double timeOf(const Motion *motion)
+        {
+            return spacetime::SpaceTimeStateSpace::getStateTime(motion->state);
+        }
 
         /** \brief A new vertex with a copy of \e state, owned by the planner. */
         Motion *newMotion(const ompl::base::State *state, Motion *parent);
@@ -141,12 +146,14 @@ namespace ompl_parc
         /** \brief Grow the time bound factor; \e skipEmpty skips a region in which no goal could be sampled. */
         void increaseTimeBound(bool skipEmpty);
 
-        /** \brief Store the path start root ... startSide, goalSide ... goal root if it arrives earlier. */
+        /** \brief Store the path start root ... startSide, goalSide ... goal root if it arrives earlier, and
+            report it to the intermediate solution callback. */
         bool recordSolution(const Motion *startSide, const Motion *goalSide);
 
         void freeMemory();
 
-        const SpaceTimeStateSpace *space_{nullptr};
+        /** \brief The space-time space (not const: OMPL's has no const accessors to its components). */
+        spacetime::SpaceTimeStateSpace *space_{nullptr};
         ompl::base::StateSamplerPtr spaceSampler_;
         Tree tStart_, tGoal_;
         std::vector<std::unique_ptr<Motion>> motions_;

@@ -15,7 +15,8 @@ namespace ompl_parc
     /** \brief A robot's configuration space times time, for planning among moving obstacles.
 
         OMPL 1.5 has no space-time space; this one behaves like OMPL >= 1.6's
-        ompl::base::SpaceTimeStateSpace (use statespaces/SpaceTime.h to get whichever is available). It is a
+        ompl::base::SpaceTimeStateSpace, and is only built against OMPL < 1.6 (ompl_parc plans in
+        spacetime::SpaceTimeStateSpace of ompl_parc/spacetime/SpaceTimeStateSpace.h, whichever is in use). It is a
         compound of the space component (weight 1 - timeWeight) and a TimeStateSpace (weight timeWeight).
         The distance between two states is infinite when going from one to the other would need a speed above
         vMax; otherwise it is the weighted sum of the space distance and the time difference. Like OMPL's,
@@ -65,9 +66,6 @@ namespace ompl_parc
         /** \brief Scale the speed test's round-off tolerance to the time (or space) extent; call after
             setting bounds. */
         void updateEpsilon();
-
-        /** \brief The tolerance of the speed test in distance(). */
-        double getEpsilon() const { return eps_; }
 
       protected:
         double vMax_;

@@ -1,6 +1,7 @@
 #include "TestProblems.h"
 
 #include "ompl_parc/planners/STRRTstar.h"
+#include "ompl_parc/planners/SpaceTime.h"
 #include "ompl_parc/spacetime/DynamicObstacles.h"
 #include "ompl_parc/spacetime/SpaceTimeMotionValidator.h"
 
@@ -8,6 +9,13 @@
 #include <ompl/base/ScopedState.h>
 #include <ompl/util/Exception.h>
 #include <ompl/util/Time.h>
+
+#include <array>
+#include <string>
+
+/* ST-RRT*: the tests of the standard behaviour run on the planner in use (spacetime::STRRTstar: ours against
+   OMPL < 1.6, OMPL's own from OMPL 1.6 on) and on ours, which PP-ST-RRT always uses; our extensions (minimum
+   goal time, stopping at the first solution, local seed, parameters) are tested on ours. */
 
 using namespace ompl_parc;
 namespace ob = ompl::base;
@@ -48,17 +56,36 @@ namespace
             plan.setRobotPath(1, obstaclePath);
             return SolutionValidator(problem).validate(plan);
         }
+
+        const og::PathGeometric &solution() const { return *pdef->getSolutionPath()->as<og::PathGeometric>(); }
     };
 
-    void expectTimedMotions(const SpaceTimeStateSpace &space, const og::PathGeometric &path)
+    double arrivalOf(const og::PathGeometric &path)
+    {
+        return spacetime::SpaceTimeStateSpace::getStateTime(path.getState(path.getStateCount() - 1));
+    }
+
+    void expectTimedMotions(const spacetime::SpaceTimeStateSpace &space, const og::PathGeometric &path)
     {
         for (std::size_t k = 1; k < path.getStateCount(); ++k)
         {
             const ob::State *from = path.getState(k - 1), *to = path.getState(k);
-            const double dt = SpaceTimeStateSpace::getStateTime(to) - SpaceTimeStateSpace::getStateTime(from);
+            const double dt =
+                spacetime::SpaceTimeStateSpace::getStateTime(to) - spacetime::SpaceTimeStateSpace::getStateTime(from);
             EXPECT_GT(dt, 0.) << "time must increase strictly, state " << k;
             EXPECT_LE(space.distanceSpace(from, to), space.getVMax() * dt * (1. + 1e-9)) << "faster than vMax";
         }
+    }
+
+    /** Solve until the first solution (both planners report each solution to the intermediate solution
+        callback) or 30 s. */
+    ob::PlannerStatus solveToFirstSolution(ob::Planner &planner, const ob::ProblemDefinitionPtr &pdef)
+    {
+        auto found = std::make_shared<bool>(false);
+        pdef->setIntermediateSolutionCallback(
+            [found](const ob::Planner *, const std::vector<const ob::State *> &, const ob::Cost) { *found = true; });
+        return planner.solve(ob::plannerOrTerminationCondition(
+            ob::timedPlannerTerminationCondition(30.), ob::PlannerTerminationCondition([found] { return *found; })));
     }
 }  // namespace
 
@@ -71,28 +98,83 @@ TEST(STRRTstar, TheStraightPlanHitsTheMovingObstacle)
     EXPECT_FALSE(SolutionValidator(setup.problem).validate(plan).valid);
 }
 
-class STRRTstarRewiring : public testing::TestWithParam<std::string>
+template <typename Planner>
+class STRRTstarInUse : public testing::Test
 {
+  protected:
+    /** A first solution around the moving obstacle with the rewiring \e mode; a valid timed path. */
+    void findsATimedPath(void (Planner::*mode)())
+    {
+        const MovingObstacle setup;
+        Planner planner(setup.si);
+        (planner.*mode)();
+        planner.setRange(1.);
+        planner.setProblemDefinition(setup.pdef);
+        planner.setup();
+        ASSERT_EQ(solveToFirstSolution(planner, setup.pdef), ob::PlannerStatus::EXACT_SOLUTION);
+        expectTimedMotions(*setup.si->getStateSpace()->as<spacetime::SpaceTimeStateSpace>(), setup.solution());
+        const auto report = setup.validate(setup.solution());
+        EXPECT_TRUE(report.valid) << report.message;
+    }
 };
 
-TEST_P(STRRTstarRewiring, FindsATimedPathAroundAMovingObstacle)
+/** The planner in use, and ours where that is OMPL's. */
+#if OMPL_PARC_OMPL_HAS_SPACE_TIME
+using STRRTstarPlanners = testing::Types<spacetime::STRRTstar, ompl_parc::STRRTstar>;
+#else
+using STRRTstarPlanners = testing::Types<spacetime::STRRTstar>;
+#endif
+
+struct STRRTstarPlannerName
 {
-    const MovingObstacle setup;
-    STRRTstar planner(setup.si);
-    planner.params().setParam("rewiring", GetParam());
-    planner.setRange(1.);
-    planner.setStopAtFirstSolution(true);
-    planner.setLocalSeed(5);
-    planner.setProblemDefinition(setup.pdef);
-    planner.setup();
-    ASSERT_EQ(planner.solve(ob::timedPlannerTerminationCondition(30.)), ob::PlannerStatus::EXACT_SOLUTION);
-    const auto &path = *setup.pdef->getSolutionPath()->as<og::PathGeometric>();
-    expectTimedMotions(*setup.si->getStateSpace()->as<SpaceTimeStateSpace>(), path);
-    const auto report = setup.validate(path);
-    EXPECT_TRUE(report.valid) << report.message;
+    template <typename Planner>
+    static std::string GetName(int)
+    {
+        return std::is_same_v<Planner, ompl_parc::STRRTstar> ? "ompl_parc" : "OMPL";
+    }
+};
+
+TYPED_TEST_SUITE(STRRTstarInUse, STRRTstarPlanners, STRRTstarPlannerName);
+
+TYPED_TEST(STRRTstarInUse, FindsATimedPathWithoutRewiring)
+{
+    this->findsATimedPath(&TypeParam::setRewiringToOff);
 }
 
-INSTANTIATE_TEST_SUITE_P(AllModes, STRRTstarRewiring, testing::Values("off", "radius", "knearest"));
+TYPED_TEST(STRRTstarInUse, FindsATimedPathWithRadiusRewiring)
+{
+    this->findsATimedPath(&TypeParam::setRewiringToRadius);
+}
+
+TYPED_TEST(STRRTstarInUse, FindsATimedPathWithKNearestRewiring)
+{
+    this->findsATimedPath(&TypeParam::setRewiringToKNearest);
+}
+
+TYPED_TEST(STRRTstarInUse, ImprovesTheArrivalUntilTheTerminationCondition)
+{
+    const MovingObstacle setup;
+    TypeParam planner(setup.si);
+    planner.setRewiringToKNearest();
+    planner.setProblemDefinition(setup.pdef);
+    std::vector<double> reported;
+    setup.pdef->setIntermediateSolutionCallback([&reported](const ob::Planner *, const std::vector<const ob::State *> &,
+                                                            const ob::Cost cost) { reported.push_back(cost.value()); });
+    ASSERT_EQ(planner.solve(ob::timedPlannerTerminationCondition(0.5)), ob::PlannerStatus::EXACT_SOLUTION);
+    ASSERT_FALSE(reported.empty());
+    for (std::size_t k = 1; k < reported.size(); ++k)
+        EXPECT_LE(reported[k], reported[k - 1]) << "solution " << k << " arrives later";
+    EXPECT_DOUBLE_EQ(arrivalOf(setup.solution()), reported.back());
+    EXPECT_GE(arrivalOf(setup.solution()), 10. - 1e-6);  // at least the straight-line time
+    EXPECT_TRUE(setup.validate(setup.solution()).valid);
+}
+
+TYPED_TEST(STRRTstarInUse, RejectsANonSpaceTimeStateSpace)
+{
+    const auto problem = test::twoDiscs({-5., 0.}, {5., 0.}, {5., 0.}, {-5., 0.});
+    EXPECT_THROW(TypeParam{problem.getSpaceInformation()}, ompl::Exception);
+    EXPECT_THROW(TypeParam{problem.getSpaceInformation()->getRobot(0)->getSpaceInformation()}, ompl::Exception);
+}
 
 TEST(STRRTstar, ImprovesUntilTheTerminationConditionUnlessToldToStop)
 {
@@ -102,19 +184,16 @@ TEST(STRRTstar, ImprovesUntilTheTerminationConditionUnlessToldToStop)
     first.setLocalSeed(9);
     first.setProblemDefinition(setup.pdef);
     ASSERT_EQ(first.solve(ob::timedPlannerTerminationCondition(30.)), ob::PlannerStatus::EXACT_SOLUTION);
-    const double firstArrival =
-        SpaceTimeStateSpace::getStateTime(setup.pdef->getSolutionPath()->as<og::PathGeometric>()->getStates().back());
+    const double firstArrival = arrivalOf(setup.solution());
 
+    // The same seed finds the same first solution, then only earlier arrivals.
     const MovingObstacle again;
     STRRTstar improving(again.si);
     improving.setLocalSeed(9);
     improving.setProblemDefinition(again.pdef);
     ASSERT_EQ(improving.solve(ob::timedPlannerTerminationCondition(0.5)), ob::PlannerStatus::EXACT_SOLUTION);
-    const auto &path = *again.pdef->getSolutionPath()->as<og::PathGeometric>();
-    EXPECT_LE(SpaceTimeStateSpace::getStateTime(path.getState(path.getStateCount() - 1)), firstArrival);
-    EXPECT_GE(SpaceTimeStateSpace::getStateTime(path.getState(path.getStateCount() - 1)),
-              10.);  // at least the straight-line time
-    EXPECT_TRUE(again.validate(path).valid);
+    EXPECT_LE(arrivalOf(again.solution()), firstArrival);
+    EXPECT_TRUE(again.validate(again.solution()).valid);
 }
 
 TEST(STRRTstar, HonoursTheMinimumGoalTime)
@@ -126,9 +205,8 @@ TEST(STRRTstar, HonoursTheMinimumGoalTime)
     planner.setLocalSeed(3);
     planner.setProblemDefinition(setup.pdef);
     ASSERT_EQ(planner.solve(ob::timedPlannerTerminationCondition(30.)), ob::PlannerStatus::EXACT_SOLUTION);
-    const auto &path = *setup.pdef->getSolutionPath()->as<og::PathGeometric>();
-    EXPECT_GE(SpaceTimeStateSpace::getStateTime(path.getState(path.getStateCount() - 1)), 25.);
-    EXPECT_TRUE(setup.validate(path).valid);
+    EXPECT_GE(arrivalOf(setup.solution()), 25.);
+    EXPECT_TRUE(setup.validate(setup.solution()).valid);
 }
 
 TEST(STRRTstar, ReturnsWithinItsTerminationCondition)
@@ -145,12 +223,8 @@ TEST(STRRTstar, ReturnsWithinItsTerminationCondition)
     EXPECT_LT(ompl::time::seconds(ompl::time::now() - start), 0.2);
 }
 
-TEST(STRRTstar, RejectsANonSpaceTimeStateSpaceAndBadSettings)
+TEST(STRRTstar, RejectsBadSettings)
 {
-    const auto problem = test::twoDiscs({-5., 0.}, {5., 0.}, {5., 0.}, {-5., 0.});
-    EXPECT_THROW(STRRTstar{problem.getSpaceInformation()}, ompl::Exception);
-    EXPECT_THROW(STRRTstar{problem.getSpaceInformation()->getRobot(0)->getSpaceInformation()}, ompl::Exception);
-
     const MovingObstacle setup;
     STRRTstar planner(setup.si);
     EXPECT_THROW(planner.setRewiringState("sometimes"), ompl::Exception);

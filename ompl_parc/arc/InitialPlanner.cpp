@@ -1,6 +1,7 @@
 #include "ompl_parc/arc/InitialPlanner.h"
 
 #include "ompl_parc/model/MultiRobotPlan.h"
+#include "ompl_parc/util/OmplCompat.h"
 #include "ompl_parc/util/SeededPathSimplifier.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
 
@@ -42,7 +43,7 @@ bool ompl_parc::InitialPlanner::plan(std::size_t robot, const ob::PlannerTermina
         // without improvement) and one B-spline smoothing step.
         SeededPathSimplifier simplifier(si, mixSeed(seed, 0x51));
         simplifier.reduceVertices(geometric);
-        simplifier.shortcutPath(geometric, 128, 32);
+        compat::shortcutPath(simplifier, geometric, 128, 32);
         simplifier.smoothBSpline(geometric, 1);
     }
     path = MultiRobotPlan::fromPathGeometric(*si, geometric).getRobotPath(0);

@@ -1,6 +1,6 @@
 #include "ompl_parc/spacetime/SpaceTimeMotionValidator.h"
 
-#include "ompl_parc/statespaces/SpaceTimeStateSpace.h"
+#include "ompl_parc/spacetime/SpaceTimeStateSpace.h"
 
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
@@ -27,7 +27,8 @@ bool ompl_parc::SpaceTimeMotionValidator::forEachTimestep(
     const ob::State *s1, const ob::State *s2, const std::function<bool(std::size_t, const double *)> &visit) const
 {
     const double res = obstacles_->getResolution();
-    const double t1 = SpaceTimeStateSpace::getStateTime(s1), t2 = SpaceTimeStateSpace::getStateTime(s2);
+    const double t1 = spacetime::SpaceTimeStateSpace::getStateTime(s1),
+                 t2 = spacetime::SpaceTimeStateSpace::getStateTime(s2);
     const double *q1 = configOf(s1), *q2 = configOf(s2);
     const unsigned int d = obstacles_->getRobot()->getDimension();
     thread_local std::vector<double> q;
@@ -47,8 +48,9 @@ bool ompl_parc::SpaceTimeMotionValidator::forEachTimestep(
 
 bool ompl_parc::SpaceTimeMotionValidator::checkMotion(const ob::State *s1, const ob::State *s2) const
 {
-    const auto *space = si_->getStateSpace()->as<SpaceTimeStateSpace>();
-    const double dt = SpaceTimeStateSpace::getStateTime(s2) - SpaceTimeStateSpace::getStateTime(s1);
+    const auto *space = si_->getStateSpace()->as<spacetime::SpaceTimeStateSpace>();
+    const double dt =
+        spacetime::SpaceTimeStateSpace::getStateTime(s2) - spacetime::SpaceTimeStateSpace::getStateTime(s1);
     if (!(dt > 0.) || !(space->distanceSpace(s1, s2) <= space->getVMax() * dt * (1. + 1e-12)) || !si_->isValid(s2))
     {
         ++invalid_;
@@ -93,8 +95,8 @@ std::vector<double> ompl_parc::SpaceTimeMotionValidator::layOnGrid(const ompl::g
         forEachTimestep(path.getState(s - 1), path.getState(s), append);
     // The arrival, rounded up: the end state itself (checked at that timestep as a state).
     const ob::State *end = path.getState(path.getStateCount() - 1);
-    const auto arrival =
-        static_cast<std::size_t>(std::ceil(SpaceTimeStateSpace::getStateTime(end) * obstacles_->getResolution()));
+    const auto arrival = static_cast<std::size_t>(
+        std::ceil(spacetime::SpaceTimeStateSpace::getStateTime(end) * obstacles_->getResolution()));
     if (flat.size() < arrival * d)
         throw ompl::Exception("SpaceTimeMotionValidator", "the path must start at time 0 and go forward in time");
     flat.resize(arrival * d);

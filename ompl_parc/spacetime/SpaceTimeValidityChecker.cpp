@@ -1,6 +1,6 @@
 #include "ompl_parc/spacetime/SpaceTimeValidityChecker.h"
 
-#include "ompl_parc/statespaces/SpaceTimeStateSpace.h"
+#include "ompl_parc/spacetime/SpaceTimeStateSpace.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 
@@ -15,7 +15,7 @@ ompl_parc::SpaceTimeValidityChecker::SpaceTimeValidityChecker(ob::SpaceInformati
 
 bool ompl_parc::SpaceTimeValidityChecker::isValid(const ob::State *state) const
 {
-    const double step = SpaceTimeStateSpace::getStateTime(state) * obstacles_->getResolution();
+    const double step = spacetime::SpaceTimeStateSpace::getStateTime(state) * obstacles_->getResolution();
     if (!(step >= 0.))
         return false;
     const double *q = state->as<ob::CompoundState>()->as<ob::RealVectorStateSpace::StateType>(0)->values;

@@ -2,7 +2,7 @@
 
 #include "ompl_parc/planners/STRRTstar.h"
 #include "ompl_parc/spacetime/SpaceTimeMotionValidator.h"
-#include "ompl_parc/statespaces/SpaceTimeStateSpace.h"
+#include "ompl_parc/spacetime/SpaceTimeStateSpace.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
 
 #include <ompl/base/ScopedState.h>
@@ -41,7 +41,7 @@ namespace
     ob::SpaceInformationPtr probeSpaceInformation()
     {
         return std::make_shared<ob::SpaceInformation>(
-            std::make_shared<ompl_parc::SpaceTimeStateSpace>(std::make_shared<ob::RealVectorStateSpace>(1)));
+            std::make_shared<ompl_parc::spacetime::SpaceTimeStateSpace>(std::make_shared<ob::RealVectorStateSpace>(1)));
     }
 }  // namespace
 

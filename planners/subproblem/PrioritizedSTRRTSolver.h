@@ -25,8 +25,8 @@ namespace ompl_parc
     };
 
     /** \brief Decoupled subproblem solver (PP-ST-RRT): the team's robots are planned one after another in
-        priority order, each with ST-RRT (our STRRTstar) in its own (local-bounded) space x time, the robots
-        planned before it being moving obstacles.
+        priority order, each with ST-RRT (our STRRTstar, for its minimum goal time, which OMPL's lacks) in its
+        own (local-bounded) space x time, the robots planned before it being moving obstacles.
 
         A robot's goal counts only from the earliest timestep from which it can stay there forever without
         being hit by an earlier robot (the goal hold); if an earlier robot ends on the goal for good, the

@@ -1,13 +1,16 @@
-/* Space-time planning times. STRRTstar: robot 0 of Mobile Cross 2 crosses to the other end while robot 1
-   comes head-on along the same line (a straight timestep path): time to the first solution, in the authors'
-   settings (range 1, batch 4096, factors 2 and 2, no rewiring) and with k-nearest rewiring. PPSTRRT: the
-   PrioritizedSTRRTSolver on the whole of Mobile Cross 4 and 8 (given order). Every iteration uses a new seed;
-   counters report the success fraction and the mean arrival (s) or makespan (timesteps). */
+/* Space-time planning times. STRRTstar: robot 0 of Mobile Cross 2 or 8 crosses to the other end while the
+   others follow their straight timestep paths (robot 1 head-on along the same line). First: time to the first
+   solution, in the authors' settings (range 1, batch 4096, factors 2 and 2) without and with k-nearest
+   rewiring. Anytime: the arrival (s) reached within a 1 s budget with k-nearest rewiring. Both for our
+   ompl_parc::STRRTstar and, built against OMPL >= 1.6, OMPL's ompl::geometric::STRRTstar on the same problems
+   (both report their solutions to the same intermediate solution callback; both draw from OMPL's global seed).
+   PPSTRRT: the PrioritizedSTRRTSolver on the whole of Mobile Cross 4 and 8 (given order). Counters report the
+   success fraction and the mean arrival (s) or makespan (timesteps). */
 #include "ompl_parc/planners/STRRTstar.h"
+#include "ompl_parc/planners/SpaceTime.h"
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 #include "ompl_parc/spacetime/DynamicObstacles.h"
-#include "ompl_parc/util/SeededRealVectorSampler.h"
 
 #include <benchmark/benchmark.h>
 #include <ompl/base/ScopedState.h>
@@ -19,7 +22,7 @@ namespace ob = ompl::base;
 
 namespace
 {
-    /** Robot 1's straight timestep path from its start to its goal. */
+    /** A robot's straight timestep path from its start to its goal. */
     std::vector<double> straightPath(const MultiRobotProblem &problem, std::size_t robot)
     {
         const auto &a = problem.getStart(robot), &b = problem.getGoal(robot);
@@ -32,43 +35,94 @@ namespace
         return flat;
     }
 
-    void strrtstar(benchmark::State &state, const std::string &rewiring)
+    /** Robot 0 of Mobile Cross \e robots among the others' straight paths: a fresh problem definition per run. */
+    class CrossingProblem
+    {
+      public:
+        explicit CrossingProblem(std::size_t robots) : problem_(scenarios::createMobileCross(robots))
+        {
+            const auto &team = *problem_.getSpaceInformation();
+            auto obstacles = std::make_shared<DynamicObstacles>(team.getRobot(0), team.getResolution());
+            for (std::size_t r = 1; r < robots; ++r)
+                obstacles->addPath(*team.getRobot(r), straightPath(problem_, r));
+            si_ = createSpaceTimeSpaceInformation(team.getCompositeSpace()->getRobotSpace(0), obstacles);
+        }
+
+        const ob::SpaceInformationPtr &getSpaceInformation() const { return si_; }
+
+        ob::ProblemDefinitionPtr createProblemDefinition() const
+        {
+            auto pdef = std::make_shared<ob::ProblemDefinition>(si_);
+            ob::ScopedState<> start(si_), goal(si_);
+            start = std::vector<double>{problem_.getStart(0)[0], problem_.getStart(0)[1], 0.};
+            goal = std::vector<double>{problem_.getGoal(0)[0], problem_.getGoal(0)[1], 0.};
+            pdef->setStartAndGoalStates(start, goal);
+            return pdef;
+        }
+
+      private:
+        MultiRobotProblem problem_;
+        ob::SpaceInformationPtr si_;
+    };
+
+    /** Run \e Planner (ours or OMPL's, same settings) once per iteration; \e firstOnly stops at the first
+        solution, else the planner improves it for \e budget seconds. */
+    template <typename Planner>
+    void strrtstar(benchmark::State &state, std::size_t robots, bool rewire, bool firstOnly, double budget)
     {
         ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
-        const auto problem = scenarios::createMobileCross(2);
-        const auto &team = *problem.getSpaceInformation();
-        const auto moving = straightPath(problem, 1);
-        std::uint_fast32_t seed = 1;
+        const CrossingProblem crossing(robots);
         double solved = 0., arrival = 0.;
         for (auto _ : state)
         {
-            // Fresh seeded robot space per run, as PP-ST-RRT builds them.
-            const MultiRobotSpaceInformation local({team.getRobot(0)}, team.getResolution(), {}, ++seed);
-            auto obstacles = std::make_shared<DynamicObstacles>(team.getRobot(0), team.getResolution());
-            obstacles->addPath(*team.getRobot(1), moving);
-            const auto si = createSpaceTimeSpaceInformation(local.getCompositeSpace()->getRobotSpace(0), obstacles);
-            auto pdef = std::make_shared<ob::ProblemDefinition>(si);
-            ob::ScopedState<> start(si), goal(si);
-            start = std::vector<double>{problem.getStart(0)[0], problem.getStart(0)[1], 0.};
-            goal = std::vector<double>{problem.getGoal(0)[0], problem.getGoal(0)[1], 0.};
-            pdef->setStartAndGoalStates(start, goal);
-            STRRTstar planner(si);
+            const auto pdef = crossing.createProblemDefinition();
+            Planner planner(crossing.getSpaceInformation());
             planner.setRange(1.);
             planner.setBatchSize(4096);
-            planner.setRewiringState(rewiring);
-            planner.setStopAtFirstSolution(true);
-            planner.setLocalSeed(mixSeed(seed, 1));
+            planner.setInitialTimeBoundFactor(2.);
+            planner.setTimeBoundFactorIncrease(2.);
+            if (rewire)
+                planner.setRewiringToKNearest();
+            else
+                planner.setRewiringToOff();
             planner.setProblemDefinition(pdef);
             planner.setup();
-            if (planner.solve(ob::timedPlannerTerminationCondition(30.)) == ob::PlannerStatus::EXACT_SOLUTION)
+            auto found = std::make_shared<bool>(false);
+            pdef->setIntermediateSolutionCallback([found](const ob::Planner *, const std::vector<const ob::State *> &,
+                                                          const ob::Cost) { *found = true; });
+            const auto stop = firstOnly ? ob::plannerOrTerminationCondition(
+                                              ob::timedPlannerTerminationCondition(budget),
+                                              ob::PlannerTerminationCondition([found] { return *found; }))
+                                        : ob::timedPlannerTerminationCondition(budget);
+            if (planner.solve(stop) == ob::PlannerStatus::EXACT_SOLUTION)
             {
                 const auto &path = *pdef->getSolutionPath()->as<ompl::geometric::PathGeometric>();
                 solved += 1.;
-                arrival += SpaceTimeStateSpace::getStateTime(path.getState(path.getStateCount() - 1));
+                arrival += spacetime::SpaceTimeStateSpace::getStateTime(path.getState(path.getStateCount() - 1));
             }
         }
         state.counters["success"] = solved / static_cast<double>(state.iterations());
         state.counters["arrival_s"] = solved > 0. ? arrival / solved : 0.;
+    }
+
+    /** Registers the first-solution and anytime runs of \e Planner, named by \e name. */
+    template <typename Planner>
+    void registerSTRRTstar(const std::string &name)
+    {
+        for (const std::size_t robots : {std::size_t{2}, std::size_t{8}})
+        {
+            const std::string problem = "MobileCross" + std::to_string(robots);
+            benchmark::RegisterBenchmark((name + "/First/" + problem + "/RewiringOff").c_str(), strrtstar<Planner>,
+                                         robots, false, true, 30.)
+                ->Unit(benchmark::kMillisecond);
+            benchmark::RegisterBenchmark((name + "/First/" + problem + "/RewiringKNearest").c_str(), strrtstar<Planner>,
+                                         robots, true, true, 30.)
+                ->Unit(benchmark::kMillisecond);
+            benchmark::RegisterBenchmark((name + "/Anytime1s/" + problem + "/RewiringKNearest").c_str(),
+                                         strrtstar<Planner>, robots, true, false, 1.)
+                ->Unit(benchmark::kMillisecond)
+                ->Iterations(5);
+        }
     }
 
     void ppstrrt(benchmark::State &state, std::size_t robots)
@@ -98,9 +152,16 @@ namespace
         state.counters["success"] = solved / static_cast<double>(state.iterations());
         state.counters["makespan_steps"] = solved > 0. ? makespan / solved : 0.;
     }
+
+    /** Our ST-RRT*, and OMPL's where this OMPL has one. */
+    const bool registered = []
+    {
+        registerSTRRTstar<ompl_parc::STRRTstar>("STRRTstar_ompl_parc");
+        if constexpr (spacetime::USES_OMPL_SPACE_TIME)
+            registerSTRRTstar<spacetime::STRRTstar>("STRRTstar_OMPL");
+        return true;
+    }();
 }  // namespace
 
-BENCHMARK_CAPTURE(strrtstar, MovingObstacle_RewiringOff, std::string("off"))->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(strrtstar, MovingObstacle_RewiringKNearest, std::string("knearest"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(ppstrrt, MobileCross4, std::size_t{4})->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(ppstrrt, MobileCross8, std::size_t{8})->Unit(benchmark::kMillisecond);
