@@ -45,6 +45,9 @@ namespace ompl_parc
             one, or passes the rim of a cylinder closely: conservative, never false where collidesFcl() is true. */
         bool collides(const CollisionBody &body) const { return primitives_.collides(body); }
 
+        /** \brief The obstacles as flat arrays, for kernels that check several configurations at once. */
+        const ObstacleSet &getObstacleSet() const { return primitives_; }
+
         /** \brief True if any capsule of \e body touches any obstacle, according to FCL (exact). */
         bool collidesFcl(const CollisionBody &body) const;
 

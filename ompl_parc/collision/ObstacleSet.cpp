@@ -114,6 +114,16 @@ bool ompl_parc::ObstacleSet::collides(const CollisionBody &body) const
     return false;
 }
 
+void ompl_parc::ObstacleSet::getBox(std::size_t k, double lo[3], double hi[3]) const
+{
+    lo[0] = loX_[k];
+    lo[1] = loY_[k];
+    lo[2] = loZ_[k];
+    hi[0] = hiX_[k];
+    hi[1] = hiY_[k];
+    hi[2] = hiZ_[k];
+}
+
 bool ompl_parc::ObstacleSet::capsuleHits(const CollisionBody &body, std::size_t i, std::size_t k) const
 {
     switch (shape_[k])

@@ -35,6 +35,13 @@ namespace ompl_parc
 
         std::size_t size() const { return shape_.size(); }
 
+        /** \brief World axis-aligned box of obstacle \e k, widened by MARGIN: kernels that check several
+            configurations at once run their own broad phase on it, then capsuleHits(). */
+        void getBox(std::size_t k, double lo[3], double hi[3]) const;
+
+        /** \brief True if capsule \e i of \e body touches obstacle \e k (the narrow phase alone). */
+        bool capsuleHits(const CollisionBody &body, std::size_t i, std::size_t k) const;
+
       private:
         /** \brief What the narrow phase needs of one obstacle: the world-to-local rotation (rows of R^T), the
             centre, and the half extents of its box (for a sphere: its radius in half[0]). */
@@ -44,9 +51,6 @@ namespace ompl_parc
             double center[3];
             double half[3];
         };
-
-        /** \brief True if capsule \e i of \e body touches obstacle \e k. */
-        bool capsuleHits(const CollisionBody &body, std::size_t i, std::size_t k) const;
 
         /** \brief Capsule \e i of \e body against the box of frame \e f. */
         static bool capsuleHitsBox(const CollisionBody &body, std::size_t i, const Frame &f);

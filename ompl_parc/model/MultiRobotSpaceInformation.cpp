@@ -75,8 +75,11 @@ ompl_parc::MultiRobotSpaceInformation::MultiRobotSpaceInformation(std::vector<Ro
       composite_(std::static_pointer_cast<CompositeStateSpace>(getStateSpace())),
       resolution_(resolution)
 {
-    setStateValidityChecker(std::make_shared<MultiRobotValidityChecker>(this, robots_));
-    setMotionValidator(std::make_shared<RakeMotionValidator>(this));
+    auto checker = std::make_shared<MultiRobotValidityChecker>(this, robots_);
+    setStateValidityChecker(checker);
+    setMotionValidator(std::make_shared<RakeMotionValidator>(
+        this, [checker](const double *configs, std::size_t count) { return checker->allValid(configs, count); },
+        checker.get()));
     setup();
 }
 

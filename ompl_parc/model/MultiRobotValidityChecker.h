@@ -20,7 +20,16 @@ namespace ompl_parc
         MultiRobotValidityChecker(ompl::base::SpaceInformation *si, std::vector<RobotPtr> team);
         bool isValid(const ompl::base::State *state) const override;
 
+        /** \brief True if all \e count composite configurations \e configs (flat: the robots' values in team
+            order, per configuration) are valid: each robot checks its own batch with Robot::allValid() (SIMD
+            lanes where its kind has them), then the robot pairs are tested configuration by configuration. The
+            batch check of the team's RakeMotionValidator. */
+        bool allValid(const double *configs, std::size_t count) const;
+
       private:
+        /** \brief True if two of the team's \e bodies overlap. */
+        bool anyPairCollides(const std::vector<CollisionBody> &bodies) const;
+
         std::vector<RobotPtr> team_;
     };
 }  // namespace ompl_parc

@@ -1,29 +1,77 @@
 #include "ompl_parc/robots/RakeMotionValidator.h"
 
+#include <vector>
+
+ompl_parc::RakeMotionValidator::RakeMotionValidator(ompl::base::SpaceInformation *si, BatchCheck check,
+                                                    const ompl::base::StateValidityChecker *checker)
+  : ompl::base::DiscreteMotionValidator(si), check_(std::move(check)), checker_(checker)
+{
+}
+
+template <typename Check>
+bool ompl_parc::RakeMotionValidator::rake(unsigned int n, Check check)
+{
+    unsigned int stride = 1;
+    while (2 * stride < n)
+        stride *= 2;
+    for (; stride >= 1; stride /= 2)
+        for (unsigned int j = stride; j < n; j += 2 * stride)
+            if (!check(j))
+                return false;
+    return true;
+}
+
+bool ompl_parc::RakeMotionValidator::checkBatched(const ompl::base::State *s1, const ompl::base::State *s2,
+                                                  unsigned int n) const
+{
+    thread_local std::vector<double> from, to, samples;
+    si_->getStateSpace()->copyToReals(from, s1);
+    si_->getStateSpace()->copyToReals(to, s2);
+    const std::size_t d = from.size();
+    samples.resize(static_cast<std::size_t>(BATCH) * d);
+    std::copy(to.begin(), to.end(), samples.begin());  // the end state first
+    unsigned int count = 1;
+    const auto flush = [&]
+    {
+        const bool valid = check_(samples.data(), count);
+        count = 0;
+        return valid;
+    };
+    const bool valid = rake(n,
+                            [&](unsigned int j)
+                            {
+                                // RealVectorStateSpace::interpolate's arithmetic, so the samples are the same
+                                const double t = static_cast<double>(j) / static_cast<double>(n);
+                                double *q = samples.data() + static_cast<std::size_t>(count) * d;
+                                for (std::size_t k = 0; k < d; ++k)
+                                    q[k] = from[k] + (to[k] - from[k]) * t;
+                                return ++count < BATCH || flush();
+                            });
+    return valid && (count == 0 || flush());
+}
+
 bool ompl_parc::RakeMotionValidator::checkMotion(const ompl::base::State *s1, const ompl::base::State *s2) const
 {
     // s1 is assumed valid, as in OMPL
-    if (!si_->isValid(s2))
-    {
-        invalid_++;
-        return false;
-    }
     ompl::base::StateSpace &space = *si_->getStateSpace();  // DiscreteMotionValidator keeps its own private
     const unsigned int n = space.validSegmentCount(s1, s2);
-    bool valid = true;
-    if (n >= 2)
+    bool valid;
+    if (check_ && si_->getStateValidityChecker().get() == checker_)
+        valid = checkBatched(s1, s2, n);
+    else
     {
-        unsigned int stride = 1;
-        while (2 * stride < n)
-            stride *= 2;
-        ompl::base::State *test = si_->allocState();
-        for (; stride >= 1 && valid; stride /= 2)
-            for (unsigned int j = stride; j < n && valid; j += 2 * stride)
-            {
-                space.interpolate(s1, s2, static_cast<double>(j) / static_cast<double>(n), test);
-                valid = si_->isValid(test);
-            }
-        si_->freeState(test);
+        valid = si_->isValid(s2);
+        if (valid && n >= 2)
+        {
+            ompl::base::State *test = si_->allocState();
+            valid = rake(n,
+                         [&](unsigned int j)
+                         {
+                             space.interpolate(s1, s2, static_cast<double>(j) / static_cast<double>(n), test);
+                             return si_->isValid(test);
+                         });
+            si_->freeState(test);
+        }
     }
     if (valid)
         valid_++;

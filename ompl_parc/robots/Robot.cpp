@@ -26,7 +26,9 @@ ompl_parc::Robot::Robot(std::string name, EnvironmentPtr environment, const ob::
     space->setName(name_);
     si_ = std::make_shared<ob::SpaceInformation>(space);
     si_->setStateValidityChecker([this](const ob::State *state) { return isValid(state); });
-    si_->setMotionValidator(std::make_shared<RakeMotionValidator>(si_.get()));
+    si_->setMotionValidator(std::make_shared<RakeMotionValidator>(
+        si_.get(), [this](const double *configs, std::size_t count) { return allValid(configs, count); },
+        si_->getStateValidityChecker().get()));
     setResolution(128.);
 }
 
@@ -41,10 +43,15 @@ void ompl_parc::Robot::setResolution(double stepsPerUnit)
 
 ompl_parc::Robot::Validity ompl_parc::Robot::checkValidity(const double *q) const
 {
+    thread_local CollisionBody body;
+    return checkValidity(q, body);
+}
+
+ompl_parc::Robot::Validity ompl_parc::Robot::checkValidity(const double *q, CollisionBody &body) const
+{
     for (unsigned int i = 0; i < dimension_; ++i)
         if (!(q[i] >= bounds_.low[i] && q[i] <= bounds_.high[i]))
             return Validity::OUT_OF_BOUNDS;
-    thread_local CollisionBody body;
     computeBody(q, body);
     if (selfCollides(body))
         return Validity::SELF_COLLISION;
@@ -58,10 +65,27 @@ bool ompl_parc::Robot::isValid(const ob::State *state) const
     return isValid(state->as<ob::RealVectorStateSpace::StateType>()->values);
 }
 
+bool ompl_parc::Robot::allValid(const double *configs, std::size_t count) const
+{
+    for (std::size_t k = 0; k < count; ++k)
+        if (!isValid(configs + k * dimension_))
+            return false;
+    return true;
+}
+
 bool ompl_parc::Robot::selfCollides(const CollisionBody &body) const
 {
-    return std::any_of(selfCollisionPairs_.begin(), selfCollisionPairs_.end(),
-                       [&body](const auto &p) { return capsulesCollide(body, p.first, body, p.second); });
+    // Most listed pairs are far apart: their capsules' bounding spheres (set by updateBound()) rule them out
+    // with a few multiplications, so the exact segment distance runs only for the few that are close.
+    const double *x = body.sphereX_.data(), *y = body.sphereY_.data(), *z = body.sphereZ_.data();
+    const double *r = body.sphereRadius_.data();
+    for (const auto &[i, j] : selfCollisionPairs_)
+    {
+        const double dx = x[i] - x[j], dy = y[i] - y[j], dz = z[i] - z[j], rr = r[i] + r[j];
+        if (dx * dx + dy * dy + dz * dz < rr * rr && capsulesCollide(body, i, body, j))
+            return true;
+    }
+    return false;
 }
 
 void ompl_parc::Robot::stateToConfig(const ob::State *state, double *q) const

@@ -61,8 +61,17 @@ namespace ompl_parc
 
         /** \brief Checks bounds, self-collision and the environment, in that order. */
         Validity checkValidity(const double *q) const;
+        /** \brief checkValidity(), leaving the body at \e q in \e body (unless \e q is out of bounds), for callers
+            that test it against other robots next. */
+        Validity checkValidity(const double *q, CollisionBody &body) const;
         bool isValid(const double *q) const { return checkValidity(q) == Validity::VALID; }
         bool isValid(const ompl::base::State *state) const;
+
+        /** \brief True if all \e count configurations \e configs (flat, getDimension() doubles each) are valid:
+            the samples of a motion, checked together. Kinds with a kernel that checks several configurations at
+            once (UrdfArm) override it; the default checks them one by one, in order, stopping at the first
+            invalid one. */
+        virtual bool allValid(const double *configs, std::size_t count) const;
 
         /** \brief True if the two bodies (of this robot) overlap in any listed self-collision pair. */
         bool selfCollides(const CollisionBody &body) const;

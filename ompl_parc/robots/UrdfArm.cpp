@@ -280,6 +280,26 @@ ompl_parc::UrdfArm::UrdfArm(std::string name, EnvironmentPtr environment, Chain 
     computeBody(zero.data(), body);
     computeSelfCollisionPairs(body);
     checkFixedLinks(body);
+    std::vector<UrdfArmLanes::Capsule> laneCapsules;
+    for (const LocalCapsule &c : capsules_)
+        laneCapsules.push_back({c.frame, c.a, c.b, c.radius});
+    lanes_ = std::make_unique<UrdfArmLanes>(basePose_, offsetRotations_, offsetTranslations_, std::move(laneCapsules),
+                                            selfCollisionPairs_);
+}
+
+bool ompl_parc::UrdfArm::allValid(const double *configs, std::size_t count) const
+{
+    const unsigned int n = getDimension();
+    const auto &bounds = getBounds();
+    for (std::size_t k = 0; k < count * n; ++k)
+        if (!(configs[k] >= bounds.low[k % n] && configs[k] <= bounds.high[k % n]))
+            return false;
+    const ObstacleSet &obstacles = getEnvironment()->getObstacleSet();
+    const std::size_t width = UrdfArmLanes::width();
+    for (std::size_t first = 0; first < count; first += width)
+        if (lanes_->anyCollides(configs + first * n, std::min(width, count - first), obstacles))
+            return false;
+    return true;
 }
 
 std::string ompl_parc::UrdfArm::readFile(const std::string &path)

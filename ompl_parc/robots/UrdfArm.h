@@ -2,9 +2,11 @@
 #define OMPL_PARC_URDF_ARM_
 
 #include "ompl_parc/robots/Robot.h"
+#include "ompl_parc/robots/UrdfArmLanes.h"
 
 #include <Eigen/Geometry>
 
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -54,6 +56,10 @@ namespace ompl_parc
 
         std::string getKind() const override { return "urdf_arm"; }
         void computeBody(const double *q, CollisionBody &body) const override;
+
+        /** \brief Bounds one by one, then self-collision and the environment UrdfArmLanes::width()
+            configurations at a time (single precision, conservative; see UrdfArmLanes). */
+        bool allValid(const double *configs, std::size_t count) const override;
 
         /** \brief World poses of the chain links at \e q: frames[0] is the base link, frames[k] the child
             link of movable joint k (k = 1..dimension); the tip is frames.back() times getTipOffset(). */
@@ -134,6 +140,8 @@ namespace ompl_parc
         /** \brief The primitives' capsules, in their link's aligned frame; whether all are spheres. */
         std::vector<LocalCapsule> capsules_;
         bool spheresOnly_{false};
+        /** \brief The same checks, several configurations per call. */
+        std::unique_ptr<UrdfArmLanes> lanes_;
     };
 }  // namespace ompl_parc
 

@@ -1,0 +1,203 @@
+#include "ompl_parc/robots/UrdfArmLanes.h"
+
+#include "ompl_parc/collision/PrimitiveDistance.h"
+
+#include <xsimd/xsimd.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace
+{
+    using Batch = xsimd::batch<float>;
+    constexpr std::size_t WIDTH = Batch::size;
+
+    /** Per-thread buffers of one call: frames (9 rotation + 3 translation batches each), capsule end points
+        (6 batches each) and capsule sphere centres (3 each). Sized once per thread and arm size. */
+    struct Scratch
+    {
+        std::vector<Batch> rotations, translations, ends, centers;
+        ompl_parc::CollisionBody capsule;  // one lane's capsule, in double, for the exact narrow phase
+    };
+
+    /** row-major 3x3 times vector, for a batch matrix and a constant vector. */
+    inline void rotate(const Batch *r, const float *v, const Batch *t, Batch *out)
+    {
+        for (int row = 0; row < 3; ++row)
+            out[row] = t[row] + r[3 * row] * Batch(v[0]) + r[3 * row + 1] * Batch(v[1]) + r[3 * row + 2] * Batch(v[2]);
+    }
+}  // namespace
+
+ompl_parc::UrdfArmLanes::UrdfArmLanes(const Eigen::Isometry3d &basePose,
+                                      const std::vector<Eigen::Matrix3d> &offsetRotations,
+                                      const std::vector<Eigen::Vector3d> &offsetTranslations,
+                                      std::vector<Capsule> capsules,
+                                      std::vector<std::pair<std::size_t, std::size_t>> selfPairs)
+  : joints_(offsetRotations.size()), selfPairs_(std::move(selfPairs))
+{
+    double reach = 0., extent = 0.;
+    for (const Eigen::Vector3d &t : offsetTranslations)
+        reach += t.norm();
+    for (const Capsule &c : capsules)
+        extent = std::max(extent, std::max(c.a.norm(), c.b.norm()) + c.radius);
+    selfInflation_ = (reach + extent) * static_cast<double>(joints_ + 4) * std::ldexp(1., -20);
+    inflation_ = selfInflation_ + (basePose.translation().norm() + reach + extent) * std::ldexp(1., -21);
+
+    for (int row = 0; row < 3; ++row)
+    {
+        for (int col = 0; col < 3; ++col)
+            baseRotation_[3 * row + col] = static_cast<float>(basePose.linear()(row, col));
+        baseTranslation_[row] = static_cast<float>(basePose.translation()[row]);
+    }
+    for (std::size_t k = 0; k < joints_; ++k)
+        for (int row = 0; row < 3; ++row)
+        {
+            for (int col = 0; col < 3; ++col)
+                offsetRotations_.push_back(static_cast<float>(offsetRotations[k](row, col)));
+            offsetTranslations_.push_back(static_cast<float>(offsetTranslations[k][row]));
+        }
+    for (const Capsule &c : capsules)
+    {
+        frame_.push_back(c.frame);
+        for (int r = 0; r < 3; ++r)
+        {
+            localA_.push_back(static_cast<float>(c.a[r]));
+            localB_.push_back(static_cast<float>(c.b[r]));
+        }
+        selfRadius_.push_back(static_cast<float>(c.radius + selfInflation_));
+        sphereRadius_.push_back(static_cast<float>(0.5 * (c.b - c.a).norm() + c.radius + 2. * selfInflation_));
+        radius_.push_back(static_cast<float>(c.radius + inflation_));
+    }
+}
+
+std::size_t ompl_parc::UrdfArmLanes::width()
+{
+    return WIDTH;
+}
+
+bool ompl_parc::UrdfArmLanes::anyCollides(const double *configs, std::size_t count, const ObstacleSet &obstacles) const
+{
+    const std::size_t frames = joints_ + 1, capsules = frame_.size();
+    thread_local Scratch s;
+    s.rotations.resize(9 * frames);
+    s.translations.resize(3 * frames);
+    s.ends.resize(6 * capsules);
+    s.centers.resize(3 * capsules);
+
+    // Forward kinematics in the base frame (small coordinates, small rounding), lane l = configuration l (the
+    // last one repeated into unused lanes).
+    for (int e = 0; e < 9; ++e)
+        s.rotations[e] = Batch(e % 4 == 0 ? 1.f : 0.f);
+    for (int e = 0; e < 3; ++e)
+        s.translations[e] = Batch(0.f);
+    for (std::size_t k = 0; k < joints_; ++k)
+    {
+        alignas(64) float angle[WIDTH];
+        for (std::size_t l = 0; l < WIDTH; ++l)
+            angle[l] = static_cast<float>(configs[std::min(l, count - 1) * joints_ + k]);
+        const auto sc = xsimd::sincos(Batch::load_aligned(angle));
+        const Batch &sine = sc.first, &cosine = sc.second;
+        const Batch *r = &s.rotations[9 * k];
+        const float *o = &offsetRotations_[9 * k];
+        rotate(r, &offsetTranslations_[3 * k], &s.translations[3 * k], &s.translations[3 * (k + 1)]);
+        Batch *next = &s.rotations[9 * (k + 1)];
+        for (int row = 0; row < 3; ++row)
+        {
+            Batch turned[3];
+            for (int col = 0; col < 3; ++col)
+                turned[col] = r[3 * row] * Batch(o[col]) + r[3 * row + 1] * Batch(o[3 + col]) +
+                              r[3 * row + 2] * Batch(o[6 + col]);
+            // Right-multiplying by Rz(q) turns the first two columns only.
+            next[3 * row] = cosine * turned[0] + sine * turned[1];
+            next[3 * row + 1] = cosine * turned[1] - sine * turned[0];
+            next[3 * row + 2] = turned[2];
+        }
+    }
+    for (std::size_t i = 0; i < capsules; ++i)
+    {
+        const Batch *r = &s.rotations[9 * frame_[i]], *t = &s.translations[3 * frame_[i]];
+        Batch *end = &s.ends[6 * i];
+        rotate(r, &localA_[3 * i], t, end);
+        rotate(r, &localB_[3 * i], t, end + 3);
+        for (int c = 0; c < 3; ++c)
+            s.centers[3 * i + c] = Batch(0.5f) * (end[c] + end[3 + c]);
+    }
+
+    // Self-collision: a sphere clearance per pair, the exact segment distance only where some lane is close.
+    for (const auto &[i, j] : selfPairs_)
+    {
+        const Batch *ci = &s.centers[3 * i], *cj = &s.centers[3 * j];
+        const Batch dx = ci[0] - cj[0], dy = ci[1] - cj[1], dz = ci[2] - cj[2];
+        const float reach = sphereRadius_[i] + sphereRadius_[j], touch = selfRadius_[i] + selfRadius_[j];
+        if (xsimd::none(dx * dx + dy * dy + dz * dz < Batch(reach * reach)))
+            continue;
+        const Batch *a = &s.ends[6 * i], *b = &s.ends[6 * j];
+        const Batch d2 = segmentSegmentDistanceSquared(a[0], a[1], a[2], a[3], a[4], a[5], b[0], b[1], b[2], b[3],
+                                                       b[4], b[5]);
+        if (xsimd::any(d2 < Batch(touch * touch)))
+            return true;
+    }
+
+    // Environment, in the world frame: each capsule's box against each obstacle's box, then the exact test per
+    // lane that overlaps.
+    Batch rotation[9], translation[3];
+    for (int e = 0; e < 9; ++e)
+        rotation[e] = Batch(baseRotation_[e]);
+    for (int e = 0; e < 3; ++e)
+        translation[e] = Batch(baseTranslation_[e]);
+    for (std::size_t i = 0; i < capsules; ++i)
+    {
+        Batch *end = &s.ends[6 * i];
+        for (int side = 0; side < 2; ++side)
+        {
+            Batch local[3] = {end[3 * side], end[3 * side + 1], end[3 * side + 2]};
+            for (int row = 0; row < 3; ++row)
+                end[3 * side + row] = translation[row] + rotation[3 * row] * local[0] +
+                                      rotation[3 * row + 1] * local[1] + rotation[3 * row + 2] * local[2];
+        }
+    }
+    s.capsule.resize(1, false);
+    for (std::size_t k = 0; k < obstacles.size(); ++k)
+    {
+        double lo[3], hi[3];
+        obstacles.getBox(k, lo, hi);
+        Batch boxLo[3], boxHi[3];
+        for (int c = 0; c < 3; ++c)
+        {
+            boxLo[c] = Batch(static_cast<float>(lo[c] - inflation_));
+            boxHi[c] = Batch(static_cast<float>(hi[c] + inflation_));
+        }
+        for (std::size_t i = 0; i < capsules; ++i)
+        {
+            const Batch *end = &s.ends[6 * i];
+            const Batch r(radius_[i]);
+            auto overlap = (xsimd::min(end[0], end[3]) - r <= boxHi[0]) & (xsimd::max(end[0], end[3]) + r >= boxLo[0]);
+            for (int c = 1; c < 3; ++c)
+                overlap = overlap & (xsimd::min(end[c], end[3 + c]) - r <= boxHi[c]) &
+                          (xsimd::max(end[c], end[3 + c]) + r >= boxLo[c]);
+            if (xsimd::none(overlap))
+                continue;
+            alignas(64) float lane[6][WIDTH];
+            for (int c = 0; c < 6; ++c)
+                end[c].store_aligned(lane[c]);
+            alignas(64) bool near[WIDTH];
+            overlap.store_aligned(near);
+            for (std::size_t l = 0; l < std::min(count, WIDTH); ++l)
+            {
+                if (!near[l])
+                    continue;
+                CollisionBody &body = s.capsule;
+                body.ax_[0] = lane[0][l];
+                body.ay_[0] = lane[1][l];
+                body.az_[0] = lane[2][l];
+                body.bx_[0] = lane[3][l];
+                body.by_[0] = lane[4][l];
+                body.bz_[0] = lane[5][l];
+                body.radius_[0] = radius_[i];
+                if (obstacles.capsuleHits(body, 0, k))
+                    return true;
+            }
+        }
+    }
+    return false;
+}
