@@ -23,18 +23,18 @@ void ompl_parc::CollisionBody::addCapsule(double ax, double ay, double az, doubl
     spheresOnly_ = spheresOnly_ && ax == bx && ay == by && az == bz;
 }
 
-void ompl_parc::CollisionBody::resize(std::size_t n, bool spheresOnly)
+void ompl_parc::CollisionBody::resizeArrays(std::size_t n)
 {
-    for (auto *v : {&ax_, &ay_, &az_, &bx_, &by_, &bz_, &radius_})
+    for (auto *v : {&ax_, &ay_, &az_, &bx_, &by_, &bz_, &radius_, &sphereX_, &sphereY_, &sphereZ_, &sphereRadius_})
         v->resize(n);
-    spheresOnly_ = spheresOnly;
 }
 
 void ompl_parc::CollisionBody::updateBound()
 {
     const std::size_t n = size();
-    for (auto *v : {&sphereX_, &sphereY_, &sphereZ_, &sphereRadius_})
-        v->resize(n);
+    if (sphereRadius_.size() != n)  // after addCapsule(); resize() sized them already
+        for (auto *v : {&sphereX_, &sphereY_, &sphereZ_, &sphereRadius_})
+            v->resize(n);
     if (n == 0)
     {
         centerX_ = centerY_ = centerZ_ = boundRadius_ = 0.;

@@ -26,7 +26,12 @@ namespace ompl_parc
 
         /** \brief Make the body \e n capsules long, for kinematics that write the arrays directly (cheaper than
             n addCapsule() calls in the hot loop); \e spheresOnly must say whether all of them will be spheres. */
-        void resize(std::size_t n, bool spheresOnly);
+        void resize(std::size_t n, bool spheresOnly)
+        {
+            spheresOnly_ = spheresOnly;
+            if (radius_.size() != n)  // inline and cheap when the size is unchanged: the case per timestep
+                resizeArrays(n);
+        }
 
         /** \brief Add a sphere (a capsule of zero length). */
         void addSphere(double x, double y, double z, double radius) { addCapsule(x, y, z, x, y, z, radius); }
@@ -52,6 +57,10 @@ namespace ompl_parc
 
         /** \brief Bounding sphere of each capsule, one array per coordinate (set by updateBound()). */
         std::vector<double> sphereX_, sphereY_, sphereZ_, sphereRadius_;
+
+      private:
+        /** \brief Give every per-capsule array \e n entries. */
+        void resizeArrays(std::size_t n);
     };
 }  // namespace ompl_parc
 
