@@ -161,11 +161,14 @@ int main(int argc, char **argv)
             }
 
             const MultiRobotPlan plan = tools::planOf(*planner, si, true);
+            const ompl::time::point checkStart = ompl::time::now();
             const ValidationReport report = SolutionValidator(problem).validate(plan);
+            const double checkTime = ompl::time::seconds(ompl::time::now() - checkStart);
             std::cout << "makespan   " << plan.getMakespan() << " timesteps ("
                       << plan.getMakespan() / si->getResolution() << " s at vmax 1)\n"
                       << "sum costs  " << plan.getSumOfCosts() << " timesteps\n"
-                      << "validated  " << (report.valid ? "yes" : "NO: " + report.message) << std::endl;
+                      << "validated  " << (report.valid ? "yes" : "NO: " + report.message) << " (" << checkTime
+                      << " s)" << std::endl;
             if (vm.count("out"))
             {
                 SolutionFile::write(vm["out"].as<std::string>(), plan, *si);

@@ -99,3 +99,16 @@ std::vector<ompl_parc::Conflict> ompl_parc::test::allConflicts(const MultiRobotS
                     all.push_back({i, j, t});
     return all;
 }
+
+ompl_parc::MultiRobotProblem ompl_parc::test::problemOfPlan(const MultiRobotSpaceInformationPtr &si,
+                                                           const MultiRobotPlan &plan)
+{
+    std::vector<std::vector<double>> starts, goals;
+    for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
+    {
+        const double *first = plan.getConfig(i, 0), *last = plan.getConfig(i, plan.getArrival(i));
+        starts.emplace_back(first, first + plan.getDimension(i));
+        goals.emplace_back(last, last + plan.getDimension(i));
+    }
+    return MultiRobotProblem(si, starts, goals);
+}

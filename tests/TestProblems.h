@@ -41,6 +41,9 @@ namespace ompl_parc::test
         a 7 x 7 square, moving up to \e maxStep per coordinate and timestep: conflicts at all sorts of times. */
     MultiRobotPlan randomWalkPlan(const MultiRobotSpaceInformation &si, std::mt19937 &rng, double maxStep);
 
+    /** \brief The problem of the team of \e si whose starts and goals are where \e plan starts and ends. */
+    MultiRobotProblem problemOfPlan(const MultiRobotSpaceInformationPtr &si, const MultiRobotPlan &plan);
+
     /** \brief All conflicts of \e plan by brute force over every timestep and pair, in (t, i, j) order. */
     std::vector<Conflict> allConflicts(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan);
 

@@ -1,197 +1,567 @@
 #include "ompl_parc/validation/SolutionValidator.h"
 
-#include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
-#include <fcl/geometry/shape/capsule.h>
-#include <fcl/geometry/shape/sphere.h>
-#include <fcl/narrowphase/collision.h>
+#include "ompl_parc/parallel/WorkerPool.h"
+#include "ompl_parc/validation/FclBodies.h"
+#include "ompl_parc/validation/LinearMotion.h"
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cmath>
+#include <iomanip>
 #include <limits>
-#include <memory>
+#include <optional>
 #include <sstream>
+#include <stdexcept>
+#include <thread>
+#include <tuple>
 
 namespace
 {
-    constexpr std::size_t OBSTACLE = std::numeric_limits<std::size_t>::max();
+    using ompl_parc::LinearMotion;
 
-    /** What an FCL object stands for: capsule \e part of robot \e robot, or obstacle \e part. */
-    struct Tag
+    /** Timesteps per block of the broad phase: long enough to amortise sorting the team, short enough that a
+        robot's box stays tight. */
+    constexpr std::size_t BLOCK = 64;
+    /** Blocks per round: bounds the memory of the boxes and lets an early violation end the check. */
+    constexpr std::size_t ROUND = 256;
+
+    /** \brief The seam to the plan: the one place that reads its configurations. Robot \e robot's motion as
+        breakpoints, holding its last state from its arrival to \e makespan. The plan stores a state per
+        timestep, so every state is offered and straight runs merge into pieces; a plan of timed waypoints
+        hands over its waypoints instead (same interpolation, nothing else changes). */
+    LinearMotion readMotion(const ompl_parc::MultiRobotPlan &plan, std::size_t robot, std::size_t makespan)
     {
-        std::size_t robot, part;
+        LinearMotion motion(plan.getDimension(robot));
+        const std::size_t arrival = plan.getArrival(robot);
+        for (std::size_t t = 0; t <= arrival; ++t)
+            motion.addBreakpoint(t, plan.getConfig(robot, t));
+        if (makespan > arrival)
+            motion.addBreakpoint(makespan, plan.getConfig(robot, arrival));
+        return motion;
+    }
+
+    /** What a violation is, in the order the old per-sample check reported them at one time. */
+    enum class Kind
+    {
+        BOUNDS,
+        OBSTACLE,
+        SELF,
+        PAIR
     };
 
-    /** Collision test of one team configuration with FCL, reusing its objects from sample to sample. */
-    class FclTeamChecker
+    /** A violation: robot \e a out of bounds, robot \e a hitting obstacle \e b, robot \e a in self-collision
+        (links \e b and \e c), robots \e a < \e b colliding; at a timestep or at a sample between timesteps. */
+    struct Event
+    {
+        double time;
+        bool substep;
+        Kind kind;
+        std::size_t a, b, c;
+
+        bool operator<(const Event &other) const
+        {
+            return std::tie(time, substep, kind, a, b, c) <
+                   std::tie(other.time, other.substep, other.kind, other.a, other.b, other.c);
+        }
+    };
+
+    /** A test the broad phase could not rule out: \e kind between robot \e a and robot or obstacle \e b
+        (unused for SELF) over one block. */
+    struct Candidate
+    {
+        std::size_t block;
+        Kind kind;
+        std::size_t a, b;
+    };
+
+    struct Box
+    {
+        std::array<double, 3> lo, hi;
+
+        bool overlaps(const Box &other) const
+        {
+            for (int d = 0; d < 3; ++d)
+                if (lo[d] > other.hi[d] || other.lo[d] > hi[d])
+                    return false;
+            return true;
+        }
+    };
+
+    /** The collision part of the check: the broad phase over blocks of time and the narrow phase over what
+        it leaves, on a WorkerPool. */
+    class TimeSweep
     {
       public:
-        explicit FclTeamChecker(const ompl_parc::MultiRobotSpaceInformation &si) : si_(si)
+        TimeSweep(const ompl_parc::MultiRobotSpaceInformation &si, const ompl_parc::ValidationOptions &options,
+                  const std::vector<ompl_parc::DisplacementBound> &displacement, const std::vector<LinearMotion> &motions,
+                  std::size_t makespan)
+          : si_(si)
+          , options_(options)
+          , displacement_(displacement)
+          , motions_(motions)
+          , makespan_(makespan)
+          , n_(motions.size())
+          , pool_(options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency()))
         {
-            const auto &obstacles = si.getEnvironment()->getObstacles();
-            for (std::size_t k = 0; k < obstacles.size(); ++k)
+            std::vector<ompl_parc::CollisionBody> templates(n_);
+            for (std::size_t i = 0; i < n_; ++i)
             {
-                auto object = std::make_unique<fcl::CollisionObjectd>(
-                    ompl_parc::Environment::createGeometry(obstacles[k]), obstacles[k].pose);
-                object->computeAABB();
-                obstacleTags_.push_back({OBSTACLE, k});
-                obstacleObjects_.push_back(std::move(object));
+                si.getRobot(i)->computeBody(motions[i].getFirst(), templates[i]);
+                // States merged into pieces may be MERGE_TOLERANCE off the piece: pad every radius by the move.
+                const std::vector<double> merge(motions[i].getDimension(), 2. * LinearMotion::MERGE_TOLERANCE);
+                pad_.push_back(displacement[i](merge.data()));
+                // Growth a sample may take before it exceeds the timestep radius (then the samples at the
+                // interval's ends are needed, too).
+                double margin = std::numeric_limits<double>::infinity();
+                for (double r : templates[i].radius_)
+                    margin = std::min(margin, std::max(r - options.contactTolerance, MIN_RADIUS) -
+                                                  std::max(r - options.substepSlack, MIN_RADIUS));
+                margin_.push_back(margin);
+                // Per piece, the displacement bound of one timestep on it.
+                const LinearMotion &motion = motions[i];
+                std::vector<double> dq(motion.getDimension());
+                steps_.emplace_back(motion.getPieceCount());
+                for (std::size_t p = 0; p < motion.getPieceCount(); ++p)
+                {
+                    for (unsigned int d = 0; d < motion.getDimension(); ++d)
+                        dq[d] = motion.getEnd(p)[d] - motion.getStart(p)[d];
+                    steps_[i][p] = displacement[i](dq.data()) /
+                                   static_cast<double>(motion.getEndTime(p) - motion.getStartTime(p));
+                }
+                sphere_.push_back(displacement[i].isTranslation() && templates[i].size() == 1 &&
+                                          templates[i].ax_[0] == templates[i].bx_[0] &&
+                                          templates[i].ay_[0] == templates[i].by_[0] &&
+                                          templates[i].az_[0] == templates[i].bz_[0] ?
+                                      templates[i].radius_[0] :
+                                      -1.);
             }
-            for (std::size_t k = 0; k < obstacleObjects_.size(); ++k)
+            for (unsigned int w = 0; w < pool_.getWorkerCount(); ++w)
+                workers_.push_back(std::make_unique<Worker>(si, templates, n_));
+            for (std::size_t o = 0; o < workers_[0]->fcl.getObstacleCount(); ++o)
             {
-                obstacleObjects_[k]->setUserData(&obstacleTags_[k]);
-                obstacleManager_.registerObject(obstacleObjects_[k].get());
+                const auto &b = workers_[0]->fcl.getObstacleBox(o);
+                obstacleBoxes_.push_back(Box{{b.min().x(), b.min().y(), b.min().z()}, {b.max().x(), b.max().y(), b.max().z()}});
             }
-            obstacleManager_.setup();
-            bodies_.resize(si.getRobotCount());
         }
 
-        /** Empty if the team at \e configs (one per robot) is collision-free with radii shrunk by \e slack. */
-        std::string check(const std::vector<const double *> &configs, double slack)
+        /** The earliest collision at a time before \e limit, if any; counts narrow-phase configurations. */
+        std::optional<Event> run(double limit, std::size_t &checked)
         {
-            for (std::size_t i = 0; i < configs.size(); ++i)
-                si_.getRobot(i)->computeBody(configs[i], bodies_[i]);
-            placeObjects(slack);
-            Query query{this, {}};
-            if (!obstacleObjects_.empty())
-                robotManager_.collide(&obstacleManager_, &query, &FclTeamChecker::callback);
-            if (query.message.empty())
-                robotManager_.collide(&query, &FclTeamChecker::callback);
-            return query.message;
+            const std::size_t blocks = std::max<std::size_t>(1, (makespan_ + BLOCK - 1) / BLOCK);
+            std::optional<Event> best;
+            for (std::size_t first = 0; first < blocks && !best && static_cast<double>(first * BLOCK) <= limit;
+                 first += ROUND)
+            {
+                const std::size_t count = std::min(ROUND, blocks - first);
+                computeBoxes(first, count);
+                std::vector<Candidate> candidates = collectCandidates(first, count);
+                std::atomic<std::size_t> next{0};
+                pool_.run(
+                    [&](unsigned int w)
+                    {
+                        Worker &worker = *workers_[w];
+                        for (std::size_t k = next++; k < candidates.size(); k = next++)
+                        {
+                            const auto event = check(candidates[k], worker);
+                            if (event && (!worker.best || *event < *worker.best))
+                                worker.best = event;
+                        }
+                    });
+                for (auto &worker : workers_)
+                {
+                    if (worker->best && (!best || *worker->best < *best))
+                        best = worker->best;
+                    checked += worker->checked;
+                    worker->checked = 0;
+                }
+            }
+            return best;
         }
 
       private:
-        struct Query
+        static constexpr double MIN_RADIUS = ompl_parc::FclBodies::MIN_RADIUS;
+
+        struct Worker
         {
-            FclTeamChecker *self;
-            std::string message;
+            Worker(const ompl_parc::MultiRobotSpaceInformation &si,
+                   const std::vector<ompl_parc::CollisionBody> &templates, std::size_t n)
+              : fcl(si, templates), order(n)
+            {
+            }
+            ompl_parc::FclBodies fcl;
+            ompl_parc::CollisionBody body;
+            std::vector<double> q;
+            std::vector<std::size_t> order;
+            std::size_t checked{0};
+            std::optional<Event> best;
         };
 
-        struct Capsule
-        {
-            double radius, length;
-        };
+        std::size_t blockStart(std::size_t block) const { return block * BLOCK; }
+        std::size_t blockEnd(std::size_t block) const { return std::min(makespan_, (block + 1) * BLOCK); }
 
-        static bool callback(fcl::CollisionObjectd *o1, fcl::CollisionObjectd *o2, void *data)
+        /** Per robot and block of the round, a box around its body at every instant of the block, and whether
+            it moves in the block or in the interval before (if not, every test of its was done before). */
+        void computeBoxes(std::size_t first, std::size_t count)
         {
-            auto *query = static_cast<Query *>(data);
-            const Tag &a = *static_cast<const Tag *>(o1->getUserData());
-            const Tag &b = *static_cast<const Tag *>(o2->getUserData());
-            if (a.robot == b.robot && !query->self->isSelfPair(a.robot, a.part, b.part))
-                return false;
-            fcl::CollisionRequestd request;
-            fcl::CollisionResultd result;
-            if (fcl::collide(o1, o2, request, result) == 0)
-                return false;
-            query->message = query->self->describe(a, b);
-            return true;
-        }
-
-        bool isSelfPair(std::size_t robot, std::size_t p, std::size_t q) const
-        {
-            const auto &pairs = si_.getRobot(robot)->getSelfCollisionPairs();
-            return std::find(pairs.begin(), pairs.end(), std::make_pair(std::min(p, q), std::max(p, q))) != pairs.end();
-        }
-
-        std::string describe(const Tag &a, const Tag &b) const
-        {
-            const Tag &r = a.robot == OBSTACLE ? b : a, &o = a.robot == OBSTACLE ? a : b;
-            const std::string robot = "robot '" + si_.getRobot(r.robot)->getName() + "'";
-            if (o.robot == OBSTACLE)
-                return robot + " hits obstacle '" + si_.getEnvironment()->getObstacles()[o.part].name + "'";
-            if (o.robot == r.robot)
-                return robot + " is in self-collision (links " + std::to_string(r.part) + " and " +
-                       std::to_string(o.part) + ")";
-            return "robots '" + si_.getRobot(std::min(r.robot, o.robot))->getName() + "' and '" +
-                   si_.getRobot(std::max(r.robot, o.robot))->getName() + "' collide";
-        }
-
-        /** Give every capsule an FCL object at its pose; (re)create objects whose shape changed. */
-        void placeObjects(double slack)
-        {
-            bool rebuilt = false;
-            std::size_t k = 0;
-            for (std::size_t i = 0; i < bodies_.size(); ++i)
-                for (std::size_t c = 0; c < bodies_[i].size(); ++c, ++k)
+            boxes_.assign(count * n_, Box());
+            active_.assign(count * n_, 0);
+            pool_.run(
+                [&](unsigned int w)
                 {
-                    const auto &b = bodies_[i];
-                    const Eigen::Vector3d p(b.ax_[c], b.ay_[c], b.az_[c]), q(b.bx_[c], b.by_[c], b.bz_[c]);
-                    const Capsule shape{std::max(b.radius_[c] - slack, 1e-9), (q - p).norm()};
-                    if (k == objects_.size() || std::abs(shapes_[k].radius - shape.radius) > 1e-12 ||
-                        std::abs(shapes_[k].length - shape.length) > 1e-12)
+                    Worker &worker = *workers_[w];
+                    for (std::size_t i = w; i < n_; i += pool_.getWorkerCount())
+                        for (std::size_t k = 0; k < count; ++k)
+                            computeBox(i, first + k, worker, boxes_[k * n_ + i], active_[k * n_ + i]);
+                });
+        }
+
+        void computeBox(std::size_t i, std::size_t block, Worker &worker, Box &box, char &active) const
+        {
+            const LinearMotion &motion = motions_[i];
+            const auto &robot = *si_.getRobot(i);
+            const std::size_t b0 = blockStart(block), b1 = blockEnd(block);
+            box.lo.fill(std::numeric_limits<double>::infinity());
+            box.hi.fill(-std::numeric_limits<double>::infinity());
+            worker.q.resize(motion.getDimension());
+            double grow = 0.;
+            active = block == 0;
+            const auto add = [&](std::size_t piece, std::size_t t)
+            {
+                motion.interpolate(piece, static_cast<double>(t), worker.q.data());
+                robot.computeBody(worker.q.data(), worker.body);
+                worker.body.expandBox(box.lo, box.hi);
+            };
+            if (motion.getPieceCount() == 0)  // a plan of one timestep
+                add(0, 0);
+            // The pieces over [b0 - 1, b1]: the interval before the block only decides whether the robot is active.
+            for (std::size_t p = motion.findPiece(b0 == 0 ? 0.5 : b0 - 0.5);
+                 p < motion.getPieceCount() && motion.getStartTime(p) < b1; ++p)
+            {
+                const bool still = motion.isStill(p);
+                active = active || !still;
+                if (motion.getEndTime(p) <= b0)
+                    continue;
+                const std::size_t ta = std::max(b0, motion.getStartTime(p)), tb = std::min(b1, motion.getEndTime(p));
+                if (still || displacement_[i].isTranslation())
+                {
+                    // A translation's swept body over a straight piece is the hull of its end bodies.
+                    add(p, ta);
+                    add(p, tb);
+                }
+                else
+                {
+                    // Between timesteps every body point stays within half a step's displacement of one end.
+                    for (std::size_t t = ta; t <= tb; ++t)
+                        add(p, t);
+                    grow = std::max(grow, 0.5 * steps_[i][p]);
+                }
+            }
+            for (int d = 0; d < 3; ++d)
+            {
+                box.lo[d] -= grow + pad_[i];
+                box.hi[d] += grow + pad_[i];
+            }
+        }
+
+        /** Tests the boxes leave for the round's blocks: robot-obstacle, self and robot-robot (sweep and prune
+            along x), each only if a robot in it is active. */
+        std::vector<Candidate> collectCandidates(std::size_t first, std::size_t count)
+        {
+            std::vector<std::vector<Candidate>> found(pool_.getWorkerCount());
+            pool_.run(
+                [&](unsigned int w)
+                {
+                    Worker &worker = *workers_[w];
+                    for (std::size_t k = w; k < count; k += pool_.getWorkerCount())
                     {
-                        setObject(k, i, c, shape);
-                        rebuilt = true;
+                        const Box *boxes = &boxes_[k * n_];
+                        const char *active = &active_[k * n_];
+                        for (std::size_t i = 0; i < n_; ++i)
+                        {
+                            if (!active[i])
+                                continue;
+                            for (std::size_t o = 0; o < obstacleBoxes_.size(); ++o)
+                                if (boxes[i].overlaps(obstacleBoxes_[o]))
+                                    found[w].push_back({first + k, Kind::OBSTACLE, i, o});
+                            if (!si_.getRobot(i)->getSelfCollisionPairs().empty())
+                                found[w].push_back({first + k, Kind::SELF, i, i});
+                        }
+                        auto &order = worker.order;
+                        for (std::size_t i = 0; i < n_; ++i)
+                            order[i] = i;
+                        std::sort(order.begin(), order.end(),
+                                  [&](std::size_t a, std::size_t b) { return boxes[a].lo[0] < boxes[b].lo[0]; });
+                        for (std::size_t x = 0; x < n_; ++x)
+                            for (std::size_t y = x + 1; y < n_ && boxes[order[y]].lo[0] <= boxes[order[x]].hi[0]; ++y)
+                            {
+                                const std::size_t i = order[x], j = order[y];
+                                if ((active[i] || active[j]) && boxes[i].overlaps(boxes[j]))
+                                    found[w].push_back({first + k, Kind::PAIR, std::min(i, j), std::max(i, j)});
+                            }
                     }
-                    fcl::Transform3d tf = fcl::Transform3d::Identity();
-                    tf.translation() = 0.5 * (p + q);
-                    if (shape.length > 0.)
-                        tf.linear() =
-                            Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), q - p).toRotationMatrix();
-                    objects_[k]->setTransform(tf);
-                    objects_[k]->computeAABB();
-                }
-            if (rebuilt)
-            {
-                robotManager_.clear();
-                for (std::size_t j = 0; j < objects_.size(); ++j)
-                {
-                    objects_[j]->setUserData(&tags_[j]);
-                    robotManager_.registerObject(objects_[j].get());
-                }
-                robotManager_.setup();
-            }
-            else
-                robotManager_.update();
+                });
+            std::vector<Candidate> all;
+            for (const auto &f : found)
+                all.insert(all.end(), f.begin(), f.end());
+            return all;
         }
 
-        void setObject(std::size_t k, std::size_t robot, std::size_t part, const Capsule &shape)
+        /** The earliest violation of one candidate in its block: its pieces' spans in turn (a disc's swept test
+            may clear one whole), then the last timestep of the plan. */
+        std::optional<Event> check(const Candidate &c, Worker &worker) const
         {
-            std::shared_ptr<fcl::CollisionGeometryd> geometry;
-            if (shape.length > 0.)
-                geometry = std::make_shared<fcl::Capsuled>(shape.radius, shape.length);
-            else
-                geometry = std::make_shared<fcl::Sphered>(shape.radius);
-            auto object = std::make_unique<fcl::CollisionObjectd>(geometry);
-            if (k == objects_.size())
+            const std::size_t b0 = blockStart(c.block), b1 = blockEnd(c.block);
+            const bool pair = c.kind == Kind::PAIR;
+            for (std::size_t ta = b0; ta < b1;)
             {
-                objects_.push_back(std::move(object));
-                shapes_.push_back(shape);
-                tags_.push_back({robot, part});
+                const double middle = static_cast<double>(ta) + 0.5;
+                const std::size_t pa = motions_[c.a].findPiece(middle);
+                const std::size_t pb = pair ? motions_[c.b].findPiece(middle) : 0;
+                std::size_t tb = std::min(b1, motions_[c.a].getEndTime(pa));
+                if (pair)
+                    tb = std::min(tb, motions_[c.b].getEndTime(pb));
+                if (!sweptClear(c, ta, tb, pa, pb, worker))
+                    if (auto event = checkSpan(c, ta, tb, pa, pb, worker))
+                        return event;
+                ta = tb;
             }
-            else
+            if (b1 == makespan_)
             {
-                objects_[k] = std::move(object);
-                shapes_[k] = shape;
-                tags_[k] = {robot, part};
+                const auto end = static_cast<double>(b1);
+                return checkSample(c, end, false, motions_[c.a].findPiece(end), pair ? motions_[c.b].findPiece(end) : 0,
+                                   worker);
             }
+            return std::nullopt;
+        }
+
+        /** A disc on a straight piece: true if its whole swept motion over [ta, tb] clears the obstacle or the
+            other disc (full radii: more than any check below uses). */
+        bool sweptClear(const Candidate &c, std::size_t ta, std::size_t tb, std::size_t pa, std::size_t pb,
+                        Worker &worker) const
+        {
+            if (c.kind == Kind::SELF || sphere_[c.a] < 0. || (c.kind == Kind::PAIR && sphere_[c.b] < 0.))
+                return false;
+            const auto centre = [&](std::size_t robot, std::size_t piece, std::size_t t)
+            {
+                double q[2];
+                motions_[robot].interpolate(piece, static_cast<double>(t), q);
+                return Eigen::Vector3d(q[0], q[1], 0.);
+            };
+            if (c.kind == Kind::OBSTACLE)
+                return !worker.fcl.sweptSphereHitsObstacle(centre(c.a, pa, ta), centre(c.a, pa, tb),
+                                                           sphere_[c.a] + pad_[c.a], c.b);
+            // Both move linearly over [ta, tb]: their difference runs along a segment; its closest approach to 0.
+            const Eigen::Vector3d e0 = centre(c.a, pa, ta) - centre(c.b, pb, ta);
+            const Eigen::Vector3d de = centre(c.a, pa, tb) - centre(c.b, pb, tb) - e0;
+            const double s = de.squaredNorm() > 0. ? std::clamp(-e0.dot(de) / de.squaredNorm(), 0., 1.) : 0.;
+            return (e0 + s * de).norm() > sphere_[c.a] + sphere_[c.b] + pad_[c.a] + pad_[c.b] + 1e-12;
+        }
+
+        /** Timesteps ta .. tb - 1 and the intervals after them, on pieces \e pa (and \e pb). */
+        std::optional<Event> checkSpan(const Candidate &c, std::size_t ta, std::size_t tb, std::size_t pa,
+                                       std::size_t pb, Worker &worker) const
+        {
+            const bool pair = c.kind == Kind::PAIR;
+            const LinearMotion &ma = motions_[c.a];
+            const bool still = (ma.getPieceCount() == 0 || ma.isStill(pa)) &&
+                               (!pair || motions_[c.b].getPieceCount() == 0 || motions_[c.b].isStill(pb));
+            if (still)  // nothing moves: one timestep stands for the whole span
+                return checkSample(c, static_cast<double>(ta), false, pa, pb, worker);
+            const double da = steps_[c.a][pa], db = pair ? steps_[c.b][pb] : 0.;
+            // Displacement of one body relative to the other over a timestep. Two links of one arm move relative
+            // to each other only by the joints between them, which da bounds: each side takes half the growth.
+            const double total = pair ? da + db : da;
+            const bool between = options_.substeps > 1;
+            // The growths (ga + gb, or twice ga for self) add up to total/2m: within half the slack.
+            const auto m = static_cast<unsigned int>(
+                std::max<double>(options_.substeps, std::ceil(total / options_.substepSlack)));
+            const double ga = da / ((c.kind == Kind::SELF ? 4. : 2.) * m), gb = db / (2. * m);
+            const bool ends = ga > margin_[c.a] || (pair && gb > margin_[c.b]);
+            for (std::size_t t = ta; t < tb; ++t)
+            {
+                if (c.kind != Kind::SELF && !mayTouch(c, t, pa, pb, worker))
+                    continue;
+                if (auto event = checkSample(c, static_cast<double>(t), false, pa, pb, worker))
+                    return event;
+                if (!between)
+                    continue;
+                for (unsigned int j = ends ? 0 : 1; j <= (ends ? m : m - 1); ++j)
+                {
+                    const double u = static_cast<double>(t) + static_cast<double>(j) / m;
+                    if (auto event = checkSample(c, u, true, pa, pb, worker, ga, gb))
+                        return event;
+                }
+            }
+            return std::nullopt;
+        }
+
+        /** The broad phase of one timestep and the interval after it: boxes of the bodies at t and t + 1, grown
+            by half a step's displacement (and the pad), against each other or the obstacle's. */
+        bool mayTouch(const Candidate &c, std::size_t t, std::size_t pa, std::size_t pb, Worker &worker) const
+        {
+            const auto box = [&](std::size_t robot, std::size_t piece)
+            {
+                Box b;
+                b.lo.fill(std::numeric_limits<double>::infinity());
+                b.hi.fill(-std::numeric_limits<double>::infinity());
+                worker.q.resize(motions_[robot].getDimension());
+                for (std::size_t u = t; u <= t + 1; ++u)
+                {
+                    motions_[robot].interpolate(piece, static_cast<double>(u), worker.q.data());
+                    si_.getRobot(robot)->computeBody(worker.q.data(), worker.body);
+                    worker.body.expandBox(b.lo, b.hi);
+                }
+                const double grow = 0.5 * steps_[robot][piece] + pad_[robot];
+                for (int d = 0; d < 3; ++d)
+                {
+                    b.lo[d] -= grow;
+                    b.hi[d] += grow;
+                }
+                return b;
+            };
+            const Box a = box(c.a, pa);
+            if (c.kind == Kind::PAIR)
+                return a.overlaps(box(c.b, pb));
+            return a.overlaps(obstacleBoxes_[c.b]);
+        }
+
+        /** FCL at time \e u: radii shrunk by the contact tolerance at a timestep, by the slack and grown by
+            \e ga, \e gb between timesteps. */
+        std::optional<Event> checkSample(const Candidate &c, double u, bool substep, std::size_t pa, std::size_t pb,
+                                         Worker &worker, double ga = 0., double gb = 0.) const
+        {
+            const double shrink = substep ? options_.substepSlack : options_.contactTolerance;
+            const auto place = [&](std::size_t robot, std::size_t piece, double grow)
+            {
+                worker.q.resize(motions_[robot].getDimension());
+                motions_[robot].interpolate(piece, u, worker.q.data());
+                si_.getRobot(robot)->computeBody(worker.q.data(), worker.body);
+                worker.fcl.place(robot, worker.body, shrink, grow + pad_[robot]);
+                ++worker.checked;
+            };
+            place(c.a, pa, ga);
+            std::pair<std::size_t, std::size_t> links{0, 0};
+            bool hit = false;
+            switch (c.kind)
+            {
+                case Kind::OBSTACLE:
+                    hit = worker.fcl.hitsObstacle(c.a, c.b);
+                    break;
+                case Kind::SELF:
+                    hit = worker.fcl.selfCollides(c.a, links);
+                    break;
+                case Kind::PAIR:
+                    place(c.b, pb, gb);
+                    hit = worker.fcl.robotsCollide(c.a, c.b);
+                    break;
+                case Kind::BOUNDS:
+                    break;
+            }
+            if (!hit)
+                return std::nullopt;
+            if (c.kind == Kind::SELF)
+                return Event{u, substep, c.kind, c.a, links.first, links.second};
+            return Event{u, substep, c.kind, c.a, c.b, 0};
         }
 
         const ompl_parc::MultiRobotSpaceInformation &si_;
-        std::vector<ompl_parc::CollisionBody> bodies_;
-        std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects_, obstacleObjects_;
-        std::vector<Capsule> shapes_;
-        std::vector<Tag> tags_, obstacleTags_;
-        fcl::DynamicAABBTreeCollisionManagerd robotManager_, obstacleManager_;
+        const ompl_parc::ValidationOptions &options_;
+        const std::vector<ompl_parc::DisplacementBound> &displacement_;
+        const std::vector<LinearMotion> &motions_;
+        const std::size_t makespan_, n_;
+        ompl_parc::WorkerPool pool_;
+        std::vector<std::unique_ptr<Worker>> workers_;
+        /** Per robot: radius pad for merged pieces, growth a sample may take (see constructor), the radius of a
+            disc (negative for other robots). */
+        std::vector<double> pad_, margin_, sphere_;
+        /** Per robot and piece, the displacement bound of one timestep. */
+        std::vector<std::vector<double>> steps_;
+        std::vector<Box> boxes_, obstacleBoxes_;
+        std::vector<char> active_;
     };
 
-    std::string timeLabel(std::size_t t, unsigned int sub, unsigned int substeps)
+    /** The earliest timestep a robot is out of bounds: bounds are boxes, so a piece with both ends inside
+        stays inside. */
+    std::optional<Event> firstOutOfBounds(const ompl_parc::MultiRobotSpaceInformation &si,
+                                          const std::vector<LinearMotion> &motions)
+    {
+        std::optional<Event> best;
+        for (std::size_t i = 0; i < motions.size(); ++i)
+        {
+            const auto &bounds = si.getRobot(i)->getBounds();
+            const LinearMotion &motion = motions[i];
+            std::vector<double> q(motion.getDimension());
+            const auto outside = [&](const double *x)
+            {
+                for (unsigned int d = 0; d < motion.getDimension(); ++d)
+                    if (!(x[d] >= bounds.low[d] && x[d] <= bounds.high[d]))
+                        return static_cast<std::size_t>(d);
+                return std::numeric_limits<std::size_t>::max();
+            };
+            const std::size_t pieces = std::max<std::size_t>(motion.getPieceCount(), 1);
+            for (std::size_t p = 0; p < pieces && !best; ++p)
+            {
+                const bool inside = outside(motion.getStart(p)) == std::numeric_limits<std::size_t>::max() &&
+                                    (motion.getPieceCount() == 0 ||
+                                     outside(motion.getEnd(p)) == std::numeric_limits<std::size_t>::max());
+                if (inside)
+                    continue;
+                const std::size_t t1 = motion.getPieceCount() == 0 ? 0 : motion.getEndTime(p);
+                for (std::size_t t = motion.getPieceCount() == 0 ? 0 : motion.getStartTime(p); t <= t1; ++t)
+                {
+                    motion.interpolate(p, static_cast<double>(t), q.data());
+                    const std::size_t d = outside(q.data());
+                    if (d != std::numeric_limits<std::size_t>::max())
+                    {
+                        const Event event{static_cast<double>(t), false, Kind::BOUNDS, i, d, 0};
+                        if (!best || event < *best)
+                            best = event;
+                        break;
+                    }
+                }
+            }
+        }
+        return best;
+    }
+
+    std::string describe(const ompl_parc::MultiRobotSpaceInformation &si, const Event &e)
     {
         std::ostringstream out;
-        if (sub == 0)
-            out << "t=" << t;
-        else
-            out << "t=" << static_cast<double>(t) + static_cast<double>(sub) / substeps << " (sub-step)";
+        out << "t=" << std::setprecision(12) << e.time << (e.substep ? " (sub-step)" : "") << ": ";
+        const auto name = [&](std::size_t i) { return si.getRobot(i)->getName(); };
+        switch (e.kind)
+        {
+            case Kind::BOUNDS:
+                out << "robot '" << name(e.a) << "' is out of bounds in coordinate " << e.b;
+                break;
+            case Kind::OBSTACLE:
+                out << "robot '" << name(e.a) << "' hits obstacle '" << si.getEnvironment()->getObstacles()[e.b].name
+                    << "'";
+                break;
+            case Kind::SELF:
+                out << "robot '" << name(e.a) << "' is in self-collision (links " << e.b << " and " << e.c << ")";
+                break;
+            case Kind::PAIR:
+                out << "robots '" << name(e.a) << "' and '" << name(e.b) << "' collide";
+                break;
+        }
         return out.str();
     }
 }  // namespace
 
 ompl_parc::SolutionValidator::SolutionValidator(MultiRobotProblem problem, ValidationOptions options)
-    : problem_(std::move(problem)), options_(options)
+  : problem_(std::move(problem)), options_(options)
 {
     if (options_.substeps == 0)
         options_.substeps = 1;
     if (options_.substepSlack < 0.)
         options_.substepSlack = 0.5 / problem_.getSpaceInformation()->getResolution();
+    if (!(options_.substepSlack > 0.) && options_.substeps > 1)
+        throw std::invalid_argument("SolutionValidator: the check between timesteps needs a positive substepSlack");
+    const auto &si = *problem_.getSpaceInformation();
+    for (std::size_t i = 0; i < si.getRobotCount(); ++i)
+        displacement_.emplace_back(*si.getRobot(i));
 }
 
 std::string ompl_parc::SolutionValidator::checkStructure(const MultiRobotPlan &plan) const
@@ -213,93 +583,60 @@ std::string ompl_parc::SolutionValidator::checkStructure(const MultiRobotPlan &p
     return "";
 }
 
-std::string ompl_parc::SolutionValidator::checkEndpoints(const MultiRobotPlan &plan) const
-{
-    const auto &si = *problem_.getSpaceInformation();
-    for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
-    {
-        const double *first = plan.getConfig(i, 0), *last = plan.getConfig(i, plan.getArrival(i));
-        for (unsigned int d = 0; d < plan.getDimension(i); ++d)
-        {
-            if (std::abs(first[d] - problem_.getStart(i)[d]) > options_.endpointTolerance)
-                return "robot '" + si.getRobot(i)->getName() + "' does not start at its start";
-            if (std::abs(last[d] - problem_.getGoal(i)[d]) > options_.endpointTolerance)
-                return "robot '" + si.getRobot(i)->getName() + "' does not end at its goal";
-        }
-    }
-    return "";
-}
-
-std::string ompl_parc::SolutionValidator::checkMotionBound(const MultiRobotPlan &plan) const
-{
-    const double maxStep = 1. / plan.getResolution() * (1. + 1e-9) + 1e-12;
-    for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
-        for (std::size_t t = 0; t < plan.getArrival(i); ++t)
-        {
-            const double *a = plan.getConfig(i, t), *b = plan.getConfig(i, t + 1);
-            double d2 = 0.;
-            for (unsigned int d = 0; d < plan.getDimension(i); ++d)
-                d2 += (b[d] - a[d]) * (b[d] - a[d]);
-            if (std::sqrt(d2) > maxStep)
-                return "t=" + std::to_string(t) + ": robot '" + problem_.getSpaceInformation()->getRobot(i)->getName() +
-                       "' moves " + std::to_string(std::sqrt(d2)) + " in one timestep (limit " +
-                       std::to_string(1. / plan.getResolution()) + ")";
-        }
-    return "";
-}
-
-std::string ompl_parc::SolutionValidator::checkBounds(std::size_t robot, const double *q) const
-{
-    const auto &r = *problem_.getSpaceInformation()->getRobot(robot);
-    for (unsigned int d = 0; d < r.getDimension(); ++d)
-        if (!(q[d] >= r.getBounds().low[d] && q[d] <= r.getBounds().high[d]))
-            return "robot '" + r.getName() + "' is out of bounds in coordinate " + std::to_string(d);
-    return "";
-}
-
 ompl_parc::ValidationReport ompl_parc::SolutionValidator::validate(const MultiRobotPlan &plan) const
 {
     ValidationReport report;
-    for (auto check :
-         {&SolutionValidator::checkStructure, &SolutionValidator::checkEndpoints, &SolutionValidator::checkMotionBound})
-    {
-        report.message = (this->*check)(plan);
-        if (!report.message.empty())
-            return report;
-    }
-
+    report.message = checkStructure(plan);
+    if (!report.message.empty())
+        return report;
     const auto &si = *problem_.getSpaceInformation();
-    const std::size_t n = plan.getRobotCount();
-    FclTeamChecker checker(si);
-    std::vector<std::vector<double>> samples(n);
-    std::vector<const double *> configs(n);
-    const std::size_t makespan = plan.getMakespan();
-    for (std::size_t t = 0; t <= makespan; ++t)
-        for (unsigned int sub = 0; sub < (t < makespan ? options_.substeps : 1u); ++sub)
+    const std::size_t n = plan.getRobotCount(), makespan = plan.getMakespan();
+    std::vector<LinearMotion> motions;
+    for (std::size_t i = 0; i < n; ++i)
+        motions.push_back(readMotion(plan, i, makespan));
+
+    for (std::size_t i = 0; i < n; ++i)
+        for (unsigned int d = 0; d < motions[i].getDimension(); ++d)
         {
-            const double s = static_cast<double>(sub) / options_.substeps;
-            for (std::size_t i = 0; i < n; ++i)
+            if (std::abs(motions[i].getFirst()[d] - problem_.getStart(i)[d]) > options_.endpointTolerance)
             {
-                const double *a = plan.getConfig(i, t), *b = plan.getConfig(i, t + 1);
-                samples[i].resize(plan.getDimension(i));
-                for (unsigned int d = 0; d < plan.getDimension(i); ++d)
-                    samples[i][d] = a[d] + s * (b[d] - a[d]);
-                configs[i] = samples[i].data();
-                report.message = checkBounds(i, configs[i]);
-                if (!report.message.empty())
-                {
-                    report.message = timeLabel(t, sub, options_.substeps) + ": " + report.message;
-                    return report;
-                }
+                report.message = "robot '" + si.getRobot(i)->getName() + "' does not start at its start";
+                return report;
             }
-            report.configurationsChecked += n;
-            report.message = checker.check(configs, sub == 0 ? options_.contactTolerance : options_.substepSlack);
-            if (!report.message.empty())
+            if (std::abs(motions[i].getLast()[d] - problem_.getGoal(i)[d]) > options_.endpointTolerance)
             {
-                report.message = timeLabel(t, sub, options_.substeps) + ": " + report.message;
+                report.message = "robot '" + si.getRobot(i)->getName() + "' does not end at its goal";
                 return report;
             }
         }
-    report.valid = true;
+
+    // A piece moves the same in every timestep.
+    const double maxStep = 1. / plan.getResolution() * (1. + 1e-9) + 1e-12;
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t p = 0; p < motions[i].getPieceCount(); ++p)
+        {
+            double d2 = 0.;
+            for (unsigned int d = 0; d < motions[i].getDimension(); ++d)
+                d2 += std::pow(motions[i].getEnd(p)[d] - motions[i].getStart(p)[d], 2);
+            const double step =
+                std::sqrt(d2) / static_cast<double>(motions[i].getEndTime(p) - motions[i].getStartTime(p));
+            if (step > maxStep)
+            {
+                report.message = "t=" + std::to_string(motions[i].getStartTime(p)) + ": robot '" +
+                                 si.getRobot(i)->getName() + "' moves " + std::to_string(step) +
+                                 " in one timestep (limit " + std::to_string(1. / plan.getResolution()) + ")";
+                return report;
+            }
+        }
+
+    auto first = firstOutOfBounds(si, motions);
+    TimeSweep sweep(si, options_, displacement_, motions, makespan);
+    const auto collision =
+        sweep.run(first ? first->time : std::numeric_limits<double>::infinity(), report.configurationsChecked);
+    if (collision && (!first || *collision < *first))
+        first = collision;
+    if (first)
+        report.message = describe(si, *first);
+    report.valid = !first;
     return report;
 }

@@ -3,8 +3,10 @@
 
 #include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/model/MultiRobotProblem.h"
+#include "ompl_parc/validation/DisplacementBound.h"
 
 #include <string>
+#include <vector>
 
 namespace ompl_parc
 {
@@ -13,51 +15,69 @@ namespace ompl_parc
     {
         /** \brief Largest per-coordinate difference accepted between a path end and its start/goal. */
         double endpointTolerance{1e-6};
-        /** \brief Samples per timestep interval; 1 checks the timesteps only. */
+        /** \brief Fewest samples per timestep interval of the check between timesteps (more are taken where the
+            motion needs them to cover every instant); 1 checks the timesteps only. */
         unsigned int substeps{4};
-        /** \brief Radius reduction at sub-step samples; negative means half a timestep (0.5/resolution).
+        /** \brief Radius reduction between timesteps; negative means half a timestep (0.5/resolution).
             The plan's guarantee is collision-freedom at timesteps; between them grazing overlaps far
             below a timestep are expected, tunnelling through a robot or obstacle is not. */
         double substepSlack{-1.};
         /** \brief Radius reduction at timesteps: contacts shallower than this are below FCL's GJK
             tolerance and are not reported. */
         double contactTolerance{1e-6};
+        /** \brief Threads of the check; 0 means one per hardware thread. The report does not depend on it. */
+        unsigned int threads{0};
     };
 
     /** \brief Outcome of SolutionValidator::validate(). */
     struct ValidationReport
     {
         bool valid{false};
-        /** \brief The first violation found, readable ("t=42: robots 'r0' and 'r1' collide"); empty if valid. */
+        /** \brief The earliest violation in time, readable ("t=42: robots 'r0' and 'r1' collide"); empty if
+            valid. */
         std::string message;
-        /** \brief Number of (robot, sample) configurations checked. */
+        /** \brief Number of (robot, sample) configurations that went through FCL's narrow phase: a robot of a
+            tested pair, obstacle or self test counts once per timestep or sub-step sample; what the broad phase
+            and the swept tests rule out is not counted. */
         std::size_t configurationsChecked{0};
     };
 
     /** \brief Re-checks a plan against its problem, independently of every planner.
 
-        It shares the robot kinematics (computeBody) with the planners, nothing else: bounds and the
-        motion bound are its own loops, and collisions (environment, self and every robot pair) are
-        tested with FCL's dynamic AABB tree broad phase and FCL's narrow phase on its own FCL objects,
-        not with the planners' capsule test or the robots' validity checkers. Checks, in order: team
-        size and resolution; each robot starts at its start and ends at its goal; no timestep moves a
-        robot more than 1/resolution; every timestep (robots holding their goals after arrival) and
-        sub-step sample is in bounds and collision-free. */
+        It shares the robot kinematics (computeBody) with the planners, nothing else: bounds, the motion bound,
+        the broad phase and the displacement bounds are its own code, and collisions (environment, self and every
+        robot pair) are tested with FCL's narrow phase on its own FCL shapes (FclBodies), not with the planners'
+        capsule test or the robots' validity checkers. Checks, in order: team size and resolution; each robot
+        starts at its start and ends at its goal; no timestep moves a robot more than 1/resolution; then, the
+        earliest in time first, every configuration is in bounds and collision-free: at every timestep (robots
+        hold their goals after arrival) with radii shrunk by contactTolerance, and at every instant between
+        timesteps with radii shrunk by substepSlack (down to a segment or point: tunnelling through a thin wall
+        or another robot is caught, however fast).
+
+        How: each robot's motion is read as linear pieces (LinearMotion). Time is cut into blocks of 64
+        timesteps; per robot and block a box contains its body at every instant of the block (for a disc the
+        hull of its bodies at the ends of each piece, for an arm its bodies at the timesteps grown by half a
+        timestep's DisplacementBound). Only pairs and obstacles whose boxes overlap in a block are tested, and
+        only when one of them moves there. A disc on a piece is tested whole: its swept capsule against an
+        obstacle, the closest approach of two discs' linear relative motion against the sum of radii. The rest
+        goes timestep by timestep: FCL at the timestep, and between timesteps FCL at m samples with radii grown
+        by each body's largest displacement to the nearest sample (DisplacementBound / 2m), m chosen so the
+        growth stays within half the slack: any overlap at any instant shows at a sample. Blocks, pairs and
+        obstacles run on several threads; the report is the earliest violation whatever the threads. */
     class SolutionValidator
     {
       public:
+        /** \brief Throws std::invalid_argument for a robot kind without a displacement bound. */
         explicit SolutionValidator(MultiRobotProblem problem, ValidationOptions options = ValidationOptions());
 
         ValidationReport validate(const MultiRobotPlan &plan) const;
 
       private:
         std::string checkStructure(const MultiRobotPlan &plan) const;
-        std::string checkEndpoints(const MultiRobotPlan &plan) const;
-        std::string checkMotionBound(const MultiRobotPlan &plan) const;
-        std::string checkBounds(std::size_t robot, const double *q) const;
 
         MultiRobotProblem problem_;
         ValidationOptions options_;
+        std::vector<DisplacementBound> displacement_;
     };
 }  // namespace ompl_parc
 
