@@ -218,7 +218,9 @@ std::string ompl_parc::SolutionValidator::checkEndpoints(const MultiRobotPlan &p
     const auto &si = *problem_.getSpaceInformation();
     for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
     {
-        const double *first = plan.getConfig(i, 0), *last = plan.getConfig(i, plan.getArrival(i));
+        std::vector<double> first(plan.getDimension(i)), last(plan.getDimension(i));
+        plan.getConfig(i, 0, first.data());
+        plan.getConfig(i, plan.getArrival(i), last.data());
         for (unsigned int d = 0; d < plan.getDimension(i); ++d)
         {
             if (std::abs(first[d] - problem_.getStart(i)[d]) > options_.endpointTolerance)
@@ -236,7 +238,9 @@ std::string ompl_parc::SolutionValidator::checkMotionBound(const MultiRobotPlan 
     for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
         for (std::size_t t = 0; t < plan.getArrival(i); ++t)
         {
-            const double *a = plan.getConfig(i, t), *b = plan.getConfig(i, t + 1);
+            std::vector<double> a(plan.getDimension(i)), b(plan.getDimension(i));
+            plan.getConfig(i, t, a.data());
+            plan.getConfig(i, t + 1, b.data());
             double d2 = 0.;
             for (unsigned int d = 0; d < plan.getDimension(i); ++d)
                 d2 += (b[d] - a[d]) * (b[d] - a[d]);
@@ -271,7 +275,7 @@ ompl_parc::ValidationReport ompl_parc::SolutionValidator::validate(const MultiRo
     const auto &si = *problem_.getSpaceInformation();
     const std::size_t n = plan.getRobotCount();
     FclTeamChecker checker(si);
-    std::vector<std::vector<double>> samples(n);
+    std::vector<std::vector<double>> samples(n), ends(2 * n);
     std::vector<const double *> configs(n);
     const std::size_t makespan = plan.getMakespan();
     for (std::size_t t = 0; t <= makespan; ++t)
@@ -280,7 +284,11 @@ ompl_parc::ValidationReport ompl_parc::SolutionValidator::validate(const MultiRo
             const double s = static_cast<double>(sub) / options_.substeps;
             for (std::size_t i = 0; i < n; ++i)
             {
-                const double *a = plan.getConfig(i, t), *b = plan.getConfig(i, t + 1);
+                auto &a = ends[2 * i], &b = ends[2 * i + 1];
+                a.resize(plan.getDimension(i));
+                b.resize(plan.getDimension(i));
+                plan.getConfig(i, t, a.data());
+                plan.getConfig(i, t + 1, b.data());
                 samples[i].resize(plan.getDimension(i));
                 for (unsigned int d = 0; d < plan.getDimension(i); ++d)
                     samples[i][d] = a[d] + s * (b[d] - a[d]);
