@@ -1,7 +1,7 @@
 /* ompl_parc_demo: solve a built-in multi-robot scenario or a scenario file with one of our planners (or OMPL's
    RRTConnect over the composite space), re-check the result with the independent validator and optionally
    draw it (SVG for 2D problems; for 3D ones --geometry writes the shapes scripts/draw_panda_cage.py draws).
-   Exit 0: solved and validated; 1: not solved in time (or invalid); 2: bad input. */
+   Exit 0: solved and validated (or --no-validate); 1: not solved in time (or invalid); 2: bad input. */
 #include "ProgressLine.h"
 #include "ToolSupport.h"
 
@@ -46,7 +46,7 @@ namespace
         }
     }
 
-    void printStatistics(const ompl::base::Planner &planner)
+    void printStatistics(const ompl::base::Planner &planner, double planTime)
     {
         const ArcStatistics *s = nullptr;
         const ParcStatistics *parallel = nullptr;
@@ -65,7 +65,9 @@ namespace
         if (s == nullptr)
             return;
         std::cout << "stages     initial " << s->initialWall << " s, detection " << s->detectionWall
-                  << " s, resolution " << s->resolutionWall << " s (wall)\n"
+                  << " s, resolution " << s->resolutionWall << " s, other "
+                  << planTime - s->initialWall - s->detectionWall - s->resolutionWall
+                  << " s (wall; other: reading the problem, building the solution path)\n"
                   << "conflicts  " << s->conflicts << " resolved, " << s->solverCalls << " solver calls, "
                   << s->expansions << " window expansions, " << s->teamGrowths << " robot-set growths, "
                   << s->globalRepairs << " global repairs\n";
@@ -93,6 +95,7 @@ int main(int argc, char **argv)
                 "time-limit", po::value<double>()->default_value(30.), "planning time limit in seconds")(
                 "workers", po::value<unsigned int>(), "worker threads of a parallel planner (its 'workers' parameter)")(
                 "out", po::value<std::string>(), "write the solution to this JSON file")(
+                "no-validate", "skip the independent validation of the solution (timing and memory runs)")(
                 "picture", po::value<std::string>(),
                 "draw the solution (or, unsolved, the problem) to this SVG file, animated")(
                 "picture-static", "make --picture a static snapshot: starts, goals and traced paths")(
@@ -136,7 +139,7 @@ int main(int argc, char **argv)
             progress.stop();
             std::cout << "status     " << status.asString() << " after " << std::fixed << std::setprecision(3)
                       << planTime << " s\n";
-            printStatistics(*planner);
+            printStatistics(*planner, planTime);
             // The pictures of the solution, or of the problem alone if there is none.
             const auto writePictures = [&](const MultiRobotPlan *plan)
             {
@@ -161,20 +164,25 @@ int main(int argc, char **argv)
             }
 
             const MultiRobotPlan plan = tools::planOf(*planner, si, true);
+            const bool validate = vm.count("no-validate") == 0;
             const ompl::time::point checkStart = ompl::time::now();
-            const ValidationReport report = SolutionValidator(problem).validate(plan);
+            const ValidationReport report = validate ? SolutionValidator(problem).validate(plan) : ValidationReport{};
             const double checkTime = ompl::time::seconds(ompl::time::now() - checkStart);
             std::cout << "makespan   " << plan.getMakespan() << " timesteps ("
                       << plan.getMakespan() / si->getResolution() << " s at vmax 1)\n"
                       << "sum costs  " << plan.getSumOfCosts() << " timesteps\n"
-                      << "validated  " << (report.valid ? "yes" : "NO: " + report.message) << " (" << checkTime
-                      << " s)" << std::endl;
+                      << "waypoints  " << plan.getPieceCount() << " pieces over the team\n"
+                      << "validated  "
+                      << (!validate    ? std::string("skipped (--no-validate)")
+                          : report.valid ? "yes (" + std::to_string(checkTime) + " s)"
+                                         : "NO: " + report.message)
+                      << std::endl;
             if (vm.count("out"))
             {
                 SolutionFile::write(vm["out"].as<std::string>(), plan, *si);
                 std::cout << "solution   " << vm["out"].as<std::string>() << std::endl;
             }
             writePictures(&plan);
-            return static_cast<int>(report.valid ? tools::EXIT_SOLVED : tools::EXIT_FAILED);
+            return static_cast<int>(report.valid || !validate ? tools::EXIT_SOLVED : tools::EXIT_FAILED);
         });
 }

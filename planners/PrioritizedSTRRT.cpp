@@ -111,7 +111,7 @@ ob::PlannerStatus ompl_parc::PrioritizedSTRRT::solve(const ob::PlannerTerminatio
 
     plan_ = MultiRobotPlan(*mrsi_);
     for (std::size_t i = 0; i < mrsi_->getRobotCount(); ++i)
-        plan_.setRobotPath(i, patch.paths[i]);
+        plan_.setPath(i, patch.paths[i]);
     pdef_->addSolutionPath(plan_.toPathGeometric(mrsi_), false, 0., getName());
     return ob::PlannerStatus::EXACT_SOLUTION;
 }

@@ -147,7 +147,10 @@ TEST(ConflictDetector, InvalidationDropsStaleSweptBounds)
         auto path = plan.getRobotPath(a);
         path.resize(2 * t);
         for (std::size_t s = t; s <= std::max(t, plan.getArrival(b)); ++s)
-            path.insert(path.end(), plan.getConfig(b, s), plan.getConfig(b, s) + 2);
+        {
+            const auto q = test::config(plan, b, s);
+            path.insert(path.end(), q.begin(), q.end());
+        }
         plan.setRobotPath(a, path);
         detector.invalidate(a, t);
         ConflictDetector fresh(si, 16);

@@ -50,7 +50,7 @@ TEST_F(HeadOn, WindowEndpointsAndLocalBoundsFollowTheSettings)
     const auto sub = resolver.makeSubproblem(plan, {0, 1}, 2400, 0);
     EXPECT_EQ(sub.windowStart, 2200u);
     EXPECT_EQ(sub.windowEnd, 2560u);  // clipped to the team's latest arrival
-    EXPECT_EQ(sub.starts[0], std::vector<double>(plan.getConfig(0, 2200), plan.getConfig(0, 2200) + 2));
+    EXPECT_EQ(sub.starts[0], test::config(plan, 0, 2200));
     EXPECT_EQ(sub.goals[1], problem.getGoal(1));
     // Robot 0 moves along x from 10 - 2200/128 to -10 over the window: box widened by 2x its size per side.
     const double lo = -10., hi = 10. - 2200. / 128., size = hi - lo;
@@ -129,13 +129,13 @@ TEST(MultiRobotPlanSplice, LongerAndShorterPatchesShiftTheRest)
     MultiRobotPlan plan({1}, 1.);
     plan.setRobotPath(0, {0, 1, 2, 3, 4, 5, 6});
     auto longer = plan;
-    longer.splice(0, 2, 4, {2, 2.5, 3, 3.5, 4});
+    longer.splice(0, 2, 4, TimedPath::fromDense(1, {2, 2.5, 3, 3.5, 4}));
     EXPECT_EQ(longer.getRobotPath(0), (std::vector<double>{0, 1, 2, 2.5, 3, 3.5, 4, 5, 6}));
     auto shorter = plan;
-    shorter.splice(0, 1, 5, {1, 5});
+    shorter.splice(0, 1, 5, TimedPath::fromDense(1, {1, 5}));
     EXPECT_EQ(shorter.getRobotPath(0), (std::vector<double>{0, 1, 5, 6}));
     auto held = plan;  // the robot arrived at 6 before the window [8, 9]: it holds its goal until 8
-    held.splice(0, 8, 9, {6, 7, 6, 6});
+    held.splice(0, 8, 9, TimedPath::fromDense(1, {6, 7, 6, 6}));
     EXPECT_EQ(held.getRobotPath(0), (std::vector<double>{0, 1, 2, 3, 4, 5, 6, 6, 6, 7, 6}));
     EXPECT_EQ(held.getArrival(0), 10u);
 }

@@ -59,8 +59,9 @@ namespace
         planner.setProblemDefinition(pdef);
         planner.setup();
         ASSERT_EQ(planner.solve(ob::timedPlannerTerminationCondition(30.)), ob::PlannerStatus::EXACT_SOLUTION);
-        const auto plan = test::planFromTimestepPath(*problem.getSpaceInformation(),
-                                                     *pdef->getSolutionPath()->as<og::PathGeometric>());
+        const auto &plan = planner.getPlan();
+        EXPECT_TRUE(test::pathFollowsPlan(*problem.getSpaceInformation(),
+                                          *pdef->getSolutionPath()->as<og::PathGeometric>(), plan));
         const auto report = SolutionValidator(problem).validate(plan);
         EXPECT_TRUE(report.valid) << report.message;
     }
@@ -85,7 +86,7 @@ TEST(PrioritizedSTRRTSolver, SolvesMobileCross4And8AsSubproblems)
             solver.solve(*problem.getSpaceInformation(), sub, ob::timedPlannerTerminationCondition(30.), 21, patch));
         ASSERT_EQ(patch.paths.size(), robots);
         for (const auto &path : patch.paths)
-            EXPECT_EQ(path.size(), patch.paths.front().size());
+            EXPECT_EQ(path.getArrival(), patch.paths.front().getArrival());
         const auto report = validatePatch(problem, sub, patch);
         EXPECT_TRUE(report.valid) << report.message;
     }
@@ -109,12 +110,15 @@ TEST(PrioritizedSTRRTSolver, SolvesALocalSubproblemOfMobileCross8InsideItsBounds
     Patch patch;
     ASSERT_TRUE(PrioritizedSTRRTSolver().solve(*problem.getSpaceInformation(), sub,
                                                ob::timedPlannerTerminationCondition(30.), 4, patch));
-    for (const auto &path : patch.paths)
+    for (const auto &timed : patch.paths)
+    {
+        const auto path = timed.toDense();
         for (std::size_t k = 1; k < path.size(); k += 2)
         {
             EXPECT_GE(path[k], -4.);
             EXPECT_LE(path[k], -1.);
         }
+    }
     const auto report = validatePatch(problem, sub, patch);
     EXPECT_TRUE(report.valid) << report.message;
 }
@@ -130,7 +134,7 @@ TEST(PrioritizedSTRRTSolver, WaitsUntilItsGoalIsSafeToHold)
     EXPECT_TRUE(report.valid) << report.message;
 
     // b's arrival (its first timestep at the goal for good) is after a's last contact with b's goal.
-    const auto &a = patch.paths[0], &b = patch.paths[1];
+    const auto a = patch.paths[0].toDense(), b = patch.paths[1].toDense();
     std::size_t arrival = b.size() / 2 - 1;
     while (arrival > 0 && b[2 * (arrival - 1)] == 0. && b[2 * (arrival - 1) + 1] == 0.)
         --arrival;
@@ -147,7 +151,7 @@ TEST(PrioritizedSTRRTSolver, EarliestHoldScansTheEarlierRobotsPaths)
     const auto problem = corridor();
     const auto &si = *problem.getSpaceInformation();
     DynamicObstacles obstacles(si.getRobot(1), 128.);
-    obstacles.addPath(*si.getRobot(0), test::straightLine({-8., 0.}, {8., 0.}, 128.));
+    obstacles.addPath(*si.getRobot(0), TimedPath::fromDense(2, test::straightLine({-8., 0.}, {8., 0.}, 128.)));
     const std::vector<double> goal = {0., 0.};
     // a touches b's goal while |x| < 1, i.e. until it has covered 9 of its 16 units.
     EXPECT_EQ(obstacles.earliestHold(goal.data()), std::optional<std::size_t>(9 * 128));

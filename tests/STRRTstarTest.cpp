@@ -38,7 +38,7 @@ namespace
         {
             const auto &team = problem.getSpaceInformation();
             auto obstacles = std::make_shared<DynamicObstacles>(team->getRobot(0), RESOLUTION);
-            obstacles->addPath(*team->getRobot(1), obstaclePath);
+            obstacles->addPath(*team->getRobot(1), TimedPath::fromDense(2, obstaclePath));
             si = createSpaceTimeSpaceInformation(team->getCompositeSpace()->getRobotSpace(0), obstacles);
             pdef = std::make_shared<ob::ProblemDefinition>(si);
             ob::ScopedState<> start(si), end(si);
@@ -51,7 +51,7 @@ namespace
         ValidationReport validate(const og::PathGeometric &path) const
         {
             MultiRobotPlan plan(*problem.getSpaceInformation());
-            plan.setRobotPath(
+            plan.setPath(
                 0, std::static_pointer_cast<SpaceTimeMotionValidator>(si->getMotionValidator())->layOnGrid(path));
             plan.setRobotPath(1, obstaclePath);
             return SolutionValidator(problem).validate(plan);

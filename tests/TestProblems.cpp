@@ -54,18 +54,31 @@ ompl_parc::ValidationReport ompl_parc::test::validatePatch(const MultiRobotProbl
         sub.goals);
     MultiRobotPlan plan(*local.getSpaceInformation());
     for (std::size_t k = 0; k < team.size(); ++k)
-        plan.setRobotPath(k, patch.paths[k]);
+        plan.setPath(k, patch.paths[k]);
     return SolutionValidator(local).validate(plan);
 }
 
-ompl_parc::MultiRobotPlan ompl_parc::test::planFromTimestepPath(const MultiRobotSpaceInformation &si,
-                                                                const ompl::geometric::PathGeometric &path)
+bool ompl_parc::test::pathFollowsPlan(const MultiRobotSpaceInformation &si, const ompl::geometric::PathGeometric &path,
+                                      const MultiRobotPlan &plan)
 {
-    MultiRobotPlan plan(si);
-    for (std::size_t t = 0; t < path.getStateCount(); ++t)
+    const auto times = plan.getBreakpoints();
+    if (path.getStateCount() != times.size())
+        return false;
+    for (std::size_t k = 0; k < times.size(); ++k)
         for (std::size_t i = 0; i < si.getRobotCount(); ++i)
-            plan.appendConfig(i, si.getRobotValues(path.getState(t), i));
-    return plan;
+        {
+            const auto q = config(plan, i, times[k]);
+            if (!std::equal(q.begin(), q.end(), si.getRobotValues(path.getState(k), i)))
+                return false;
+        }
+    return true;
+}
+
+std::vector<double> ompl_parc::test::config(const MultiRobotPlan &plan, std::size_t robot, std::size_t t)
+{
+    std::vector<double> q(plan.getDimension(robot));
+    plan.getConfig(robot, t, q.data());
+    return q;
 }
 
 ompl_parc::MultiRobotPlan ompl_parc::test::randomWalkPlan(const MultiRobotSpaceInformation &si, std::mt19937 &rng,
@@ -95,7 +108,7 @@ std::vector<ompl_parc::Conflict> ompl_parc::test::allConflicts(const MultiRobotS
     for (std::size_t t = 0; t <= plan.getMakespan(); ++t)
         for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
             for (std::size_t j = i + 1; j < plan.getRobotCount(); ++j)
-                if (si.robotsCollide(i, plan.getConfig(i, t), j, plan.getConfig(j, t)))
+                if (si.robotsCollide(i, config(plan, i, t).data(), j, config(plan, j, t).data()))
                     all.push_back({i, j, t});
     return all;
 }
@@ -106,9 +119,10 @@ ompl_parc::MultiRobotProblem ompl_parc::test::problemOfPlan(const MultiRobotSpac
     std::vector<std::vector<double>> starts, goals;
     for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
     {
-        const double *first = plan.getConfig(i, 0), *last = plan.getConfig(i, plan.getArrival(i));
-        starts.emplace_back(first, first + plan.getDimension(i));
-        goals.emplace_back(last, last + plan.getDimension(i));
+        starts.emplace_back(plan.getDimension(i));
+        goals.emplace_back(plan.getDimension(i));
+        plan.getConfig(i, 0, starts.back().data());
+        plan.getConfig(i, plan.getArrival(i), goals.back().data());
     }
     return MultiRobotProblem(si, starts, goals);
 }

@@ -53,10 +53,13 @@ namespace ompl_parc::test
     /** \brief A subproblem's patch as a plan of its own team, re-checked by the independent validator. */
     ValidationReport validatePatch(const MultiRobotProblem &problem, const Subproblem &sub, const Patch &patch);
 
-    /** \brief A composite path with one state per timestep (as our planners write) back into a plan, without
-        re-timing: waiting timesteps stay. */
-    MultiRobotPlan planFromTimestepPath(const MultiRobotSpaceInformation &si,
-                                        const ompl::geometric::PathGeometric &path);
+    /** \brief True if \e path is \e plan as handed to OMPL: one composite state per breakpoint of the plan
+        (MultiRobotPlan::getBreakpoints()), each exactly the plan's configurations there. */
+    bool pathFollowsPlan(const MultiRobotSpaceInformation &si, const ompl::geometric::PathGeometric &path,
+                         const MultiRobotPlan &plan);
+
+    /** \brief Robot \e robot's configuration at timestep \e t as a vector. */
+    std::vector<double> config(const MultiRobotPlan &plan, std::size_t robot, std::size_t t);
 }  // namespace ompl_parc::test
 
 #endif

@@ -61,8 +61,9 @@ namespace
                 const double s = static_cast<double>(sub) / samples, shrink = sub == 0 ? 1e-6 : slack;
                 for (std::size_t i = 0; i < si.getRobotCount(); ++i)
                 {
-                    const double *a = plan.getConfig(i, t), *b = plan.getConfig(i, t + 1);
-                    std::vector<double> q(plan.getDimension(i));
+                    std::vector<double> a(plan.getDimension(i)), b(a.size()), q(a.size());
+                    plan.getConfig(i, t, a.data());
+                    plan.getConfig(i, t + 1, b.data());
                     for (std::size_t d = 0; d < q.size(); ++d)
                     {
                         q[d] = a[d] + s * (b[d] - a[d]);

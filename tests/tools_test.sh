@@ -29,13 +29,16 @@ expect 0 "^valid: 4 robots" "$bin/ompl_parc_validate" --scenario mobile_cross --
 expect 2 "robots' has 4 entries" "$bin/ompl_parc_validate" --scenario mobile_cross --robots 8 "$tmp/sol.json"
 
 # A tampered solution: robot r1 made to wait at its start (its start no longer clear of r0's path).
-python3 - "$tmp/sol.json" "$tmp/bad.json" <<'PY'
+jump=$(python3 - "$tmp/sol.json" "$tmp/bad.json" <<'PY'
 import json, sys
 doc = json.load(open(sys.argv[1]))
-doc["robots"][0]["states"][5][0] += 0.5   # a teleporting step
+piece = doc["robots"][0]["pieces"][1]   # [start, offset, steps, from, to]: moving the anchor moves its first state
+piece[3][0] += 0.5                      # a teleporting step from the timestep before it
 json.dump(doc, open(sys.argv[2], "w"))
+print(piece[0] - 1)
 PY
-expect 1 "^invalid: t=4: robot 'r0' moves" "$bin/ompl_parc_validate" "$tmp/bad.json"
+)
+expect 1 "^invalid: t=$jump: robot 'r0' moves" "$bin/ompl_parc_validate" "$tmp/bad.json"
 
 echo '{"format": "ompl_parc.solution", "version": 1' >"$tmp/truncated.json"
 expect 2 "not valid JSON" "$bin/ompl_parc_validate" "$tmp/truncated.json"

@@ -13,14 +13,14 @@ std::size_t ompl_parc::scenarios::countConflictingPairs(const MultiRobotProblem 
     const auto &si = *problem.getSpaceInformation();
     const InitialPlanner planner(problem);
     MultiRobotPlan plan(si);
-    std::vector<double> path;
+    TimedPath path;
     for (std::size_t r = 0; r < si.getRobotCount(); ++r)
     {
         // The seed of robot r's path in ARC::computeInitialPlans().
         if (!planner.plan(r, ompl::base::timedPlannerTerminationCondition(60.), mixSeed(seed, r), path))
             throw ompl::Exception("countConflictingPairs",
                                   "no path for robot '" + si.getRobot(r)->getName() + "' within 60 s");
-        plan.setRobotPath(r, path);
+        plan.setPath(r, path);
     }
     ConflictDetector detector(si);
     std::vector<std::size_t> pairs(detector.getPairCount());

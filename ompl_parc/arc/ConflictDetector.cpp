@@ -52,13 +52,16 @@ const ompl_parc::ConflictDetector::SweptBounds &ompl_parc::ConflictDetector::swe
     SweptBounds &bounds = swept_[robot];
     const Robot &model = *si_.getRobot(robot);
     const std::size_t arrival = plan.getArrival(robot);
+    TimedPath::Cursor cursor(plan.getPath(robot));
+    std::vector<double> q(model.getDimension());
     const auto boxOf = [&](std::size_t from, std::size_t to)  // timesteps [from, to)
     {
         constexpr double INF = std::numeric_limits<double>::infinity();
         Box box{{INF, INF, INF}, {-INF, -INF, -INF}};
         for (std::size_t t = from; t < to; ++t)
         {
-            model.computeBody(plan.getConfig(robot, t), scratch);
+            cursor.get(t, q.data());
+            model.computeBody(q.data(), scratch);
             scratch.expandBox(box.first, box.second);
         }
         return box;
@@ -125,13 +128,23 @@ std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRo
         }
     }
 
-    // Bodies are computed once per robot and timestep, only for robots that some active pair needs.
-    std::vector<std::size_t> stamp(robots_, std::numeric_limits<std::size_t>::max());
+    // Bodies are computed once per robot and timestep, only for robots that some active pair needs; each robot's
+    // configurations come from a cursor on its path (time only moves forward here) into its slot of `configs`.
+    std::vector<std::size_t> stamp(robots_, std::numeric_limits<std::size_t>::max()), slot(robots_ + 1, 0);
+    std::vector<TimedPath::Cursor> cursors;
+    for (std::size_t r = 0; r < robots_; ++r)
+    {
+        cursors.emplace_back(plan.getPath(r));
+        slot[r + 1] = slot[r] + plan.getDimension(r);
+    }
+    std::vector<double> configs(slot.back());
     const auto body = [&](std::size_t robot, std::size_t step) -> const CollisionBody &
     {
         if (stamp[robot] != step)
         {
-            si_.getRobot(robot)->computeBody(plan.getConfig(robot, step), bodies[robot]);
+            double *q = configs.data() + slot[robot];
+            cursors[robot].get(step, q);
+            si_.getRobot(robot)->computeBody(q, bodies[robot]);
             stamp[robot] = step;
         }
         return bodies[robot];

@@ -30,10 +30,15 @@ ompl_parc::ConflictResolver::ConflictResolver(const MultiRobotSpaceInformation &
 bool ompl_parc::ConflictResolver::teamClear(const MultiRobotPlan &plan, const std::vector<std::size_t> &team,
                                             std::size_t timestep) const
 {
+    std::vector<std::vector<double>> q;
+    for (std::size_t r : team)
+    {
+        q.emplace_back(plan.getDimension(r));
+        plan.getConfig(r, timestep, q.back().data());
+    }
     for (std::size_t a = 0; a < team.size(); ++a)
         for (std::size_t b = a + 1; b < team.size(); ++b)
-            if (si_.robotsCollide(team[a], plan.getConfig(team[a], timestep), team[b],
-                                  plan.getConfig(team[b], timestep)))
+            if (si_.robotsCollide(team[a], q[a].data(), team[b], q[b].data()))
                 return false;
     return true;
 }
@@ -44,9 +49,10 @@ void ompl_parc::ConflictResolver::fillEndpoints(const MultiRobotPlan &plan, Subp
     sub.goals.clear();
     for (std::size_t r : sub.robots)
     {
-        const double *s = plan.getConfig(r, sub.windowStart), *g = plan.getConfig(r, sub.windowEnd);
-        sub.starts.emplace_back(s, s + plan.getDimension(r));
-        sub.goals.emplace_back(g, g + plan.getDimension(r));
+        sub.starts.emplace_back(plan.getDimension(r));
+        sub.goals.emplace_back(plan.getDimension(r));
+        plan.getConfig(r, sub.windowStart, sub.starts.back().data());
+        plan.getConfig(r, sub.windowEnd, sub.goals.back().data());
     }
 }
 
@@ -58,14 +64,11 @@ void ompl_parc::ConflictResolver::fillBounds(const MultiRobotPlan &plan, Subprob
         const auto &limits = si_.getRobot(r)->getBounds();
         const unsigned int dim = plan.getDimension(r);
         ob::RealVectorBounds b(dim);
+        std::vector<double> low(dim), high(dim);
+        plan.getPath(r).bounds(sub.windowStart, sub.windowEnd, low.data(), high.data());
         for (unsigned int d = 0; d < dim; ++d)
         {
-            double lo = plan.getConfig(r, sub.windowStart)[d], hi = lo;
-            for (std::size_t t = sub.windowStart; t <= sub.windowEnd; ++t)
-            {
-                lo = std::min(lo, plan.getConfig(r, t)[d]);
-                hi = std::max(hi, plan.getConfig(r, t)[d]);
-            }
+            double lo = low[d], hi = high[d];
             const double pad = settings_.boundMargin * (hi - lo);
             lo -= pad;
             hi += pad;

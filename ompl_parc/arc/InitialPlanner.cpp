@@ -20,7 +20,7 @@ ompl_parc::InitialPlanner::InitialPlanner(const MultiRobotProblem &problem, bool
 }
 
 bool ompl_parc::InitialPlanner::plan(std::size_t robot, const ob::PlannerTerminationCondition &ptc,
-                                     std::uint_fast32_t seed, std::vector<double> &path) const
+                                     std::uint_fast32_t seed, TimedPath &path) const
 {
     const auto &mrsi = *problem_.getSpaceInformation();
     auto si = std::make_shared<MultiRobotSpaceInformation>(
@@ -46,6 +46,6 @@ bool ompl_parc::InitialPlanner::plan(std::size_t robot, const ob::PlannerTermina
         compat::shortcutPath(simplifier, geometric, 128, 32);
         simplifier.smoothBSpline(geometric, 1);
     }
-    path = MultiRobotPlan::fromPathGeometric(*si, geometric).getRobotPath(0);
+    path = MultiRobotPlan::fromPathGeometric(*si, geometric).getPath(0);
     return true;
 }

@@ -2,12 +2,12 @@
 #define OMPL_PARC_INITIAL_PLANNER_
 
 #include "ompl_parc/model/MultiRobotProblem.h"
+#include "ompl_parc/model/TimedPath.h"
 
 #include <ompl/base/Planner.h>
 #include <ompl/base/PlannerTerminationCondition.h>
 
 #include <cstdint>
-#include <vector>
 
 namespace ompl_parc
 {
@@ -22,10 +22,10 @@ namespace ompl_parc
         explicit InitialPlanner(const MultiRobotProblem &problem, bool simplify = true,
                                 ompl::base::PlannerAllocator allocator = {});
 
-        /** \brief Plan robot \e robot from its start to its goal; on success fill \e path (flat configs per
-            timestep, from start to goal) and return true; false if \e ptc fired first. */
+        /** \brief Plan robot \e robot from its start to its goal; on success fill \e path (laid on the
+            timestep grid as waypoints, from start to goal) and return true; false if \e ptc fired first. */
         bool plan(std::size_t robot, const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed,
-                  std::vector<double> &path) const;
+                  TimedPath &path) const;
 
       private:
         const MultiRobotProblem &problem_;

@@ -8,18 +8,15 @@
 
 namespace ompl_parc
 {
-    /** \brief A subproblem's answer: one path per team robot, all with the same number of timesteps,
-        from its local start (timestep 0) to its local goal (last timestep), one timestep at most
-        1/resolution, team collision-free at every timestep. Robots that arrive early wait at their goal. */
+    /** \brief A subproblem's answer: one timed path per team robot, all with the same arrival, from its
+        local start (timestep 0) to its local goal (last timestep), one timestep at most 1/resolution, team
+        collision-free at every timestep. Robots that arrive early wait at their goal. */
     struct Patch
     {
-        std::vector<std::vector<double>> paths;
+        std::vector<TimedPath> paths;
 
-        /** \brief Number of timesteps the patch lasts (states - 1), given the first robot's dimension. */
-        std::size_t getDuration(unsigned int dimension) const
-        {
-            return paths.empty() ? 0 : paths.front().size() / dimension - 1;
-        }
+        /** \brief Number of timesteps the patch lasts (its paths' arrival). */
+        std::size_t getDuration() const { return paths.empty() ? 0 : paths.front().getArrival(); }
 
         /** \brief The paper's splice: each robot of \e subproblem keeps its path before the window, then
             follows its patch path, then the rest of its old path shifted by (patch duration - window

@@ -62,15 +62,15 @@ bool ompl_parc::RepairLoop::planInitial(const ob::PlannerTerminationCondition &p
     const InitialPlanner planner(problem_, options_.settings.simplifyInitial);
     const std::size_t n = planned_.size();
     OrTaskStatistics stats;
-    const auto paths = OrTaskRunner<std::vector<double>>(*pool_, options_.localOr)
+    const auto paths = OrTaskRunner<TimedPath>(*pool_, options_.localOr)
                            .run(
                                robots.size(), ptc,
                                [&](std::size_t task, unsigned int attempt,
-                                   const ob::PlannerTerminationCondition &stop) -> std::optional<std::vector<double>>
+                                   const ob::PlannerTerminationCondition &stop) -> std::optional<TimedPath>
                                {
                                    const std::size_t r = robots[task];
                                    // Attempt 0 uses the robot's own seed; extra OR attempts new ones.
-                                   std::vector<double> path;
+                                   TimedPath path;
                                    if (!planner.plan(r, stop, mixSeed(seed_, r + n * attempt), path))
                                        return std::nullopt;
                                    return path;
@@ -82,7 +82,7 @@ bool ompl_parc::RepairLoop::planInitial(const ob::PlannerTerminationCondition &p
     for (std::size_t k = 0; k < robots.size(); ++k)
         if (paths[k])
         {
-            plan_.setRobotPath(robots[k], *paths[k]);
+            plan_.setPath(robots[k], *paths[k]);
             planned_[robots[k]] = 1;
         }
     return isInitialised();
@@ -152,7 +152,7 @@ void ompl_parc::RepairLoop::applyRepair(const Repair &repair)
     repair.patch.spliceInto(plan_, sub);
     for (std::size_t robot : sub.robots)
         detector_.invalidate(robot, sub.windowStart);
-    const std::size_t duration = repair.patch.getDuration(plan_.getDimension(sub.robots.front()));
+    const std::size_t duration = repair.patch.getDuration();
     cache_.add(sub.robots, sub.windowStart, sub.windowStart + duration);
     ++statistics_.repairs;
     statistics_.solverCalls += repair.attempts;
@@ -165,15 +165,16 @@ ompl::geometric::PathGeometricPtr ompl_parc::RepairLoop::buildSolutionPath() con
 {
     const auto &si = problem_.getSpaceInformation();
     auto path = std::make_shared<ompl::geometric::PathGeometric>(si);
+    const auto times = plan_.getBreakpoints();
     auto &states = path->getStates();
-    states.resize(plan_.getMakespan() + 1);
+    states.resize(times.size());
     const std::size_t w = pool_->getWorkerCount(), chunk = (states.size() + w - 1) / w;
     pool_->run(
         [&](unsigned int worker)
         {
             const std::size_t from = std::min(states.size(), worker * chunk),
                               to = std::min(states.size(), from + chunk);
-            plan_.allocateStates(*si, from, to, states.data() + from);
+            plan_.allocateStates(*si, times, from, to, states.data() + from);
         });
     return path;
 }

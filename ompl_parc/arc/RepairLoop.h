@@ -64,8 +64,8 @@ namespace ompl_parc
         /** \brief Detect and repair conflicts until none is left (true) or \e ptc fires (false). */
         bool resolve(const ompl::base::PlannerTerminationCondition &ptc);
 
-        /** \brief The plan as a composite path, one state per timestep, its states allocated by all workers
-            (a large share of the work for long plans of big teams). */
+        /** \brief The plan as a composite path, one state per breakpoint (MultiRobotPlan::toPathGeometric),
+            its states allocated by all workers. */
         ompl::geometric::PathGeometricPtr buildSolutionPath() const;
 
         const MultiRobotPlan &getPlan() const { return plan_; }

@@ -101,8 +101,12 @@ std::string ompl_parc::GeometryFile::toJson(const MultiRobotProblem &problem, co
         if (plan != nullptr)
         {
             entry["tip_path"] = json::array();
+            std::vector<double> q(robot.getDimension());
             for (std::size_t t : times)
-                entry["tip_path"].push_back(tip(robot, plan->getConfig(i, t), body));
+            {
+                plan->getConfig(i, t, q.data());
+                entry["tip_path"].push_back(tip(robot, q.data(), body));
+            }
         }
         robots.push_back(std::move(entry));
     }

@@ -11,7 +11,7 @@ using nlohmann::json;
 namespace
 {
     const char *const FORMAT = "ompl_parc.solution";
-    constexpr int VERSION = 1;
+    constexpr int VERSION = 2;
 
     [[noreturn]] void fail(const std::string &what)
     {
@@ -24,24 +24,109 @@ namespace
             fail(where + ": missing field '" + key + "'");
         return object.at(key);
     }
+
+    /** A configuration of \e dimension numbers at \e value, appended to \e out. */
+    void readConfig(const json &value, unsigned int dimension, const std::string &where, std::vector<double> &out)
+    {
+        if (!value.is_array() || value.size() != dimension)
+            fail(where + " must be an array of " + std::to_string(dimension) + " numbers");
+        for (const json &v : value)
+        {
+            if (!v.is_number())
+                fail(where + " holds a non-number");
+            out.push_back(v.get<double>());
+        }
+    }
+
+    std::size_t readCount(const json &value, const std::string &where)
+    {
+        if (!value.is_number_unsigned())
+            fail(where + " must be a non-negative integer");
+        return value.get<std::size_t>();
+    }
+
+    /** Version 1: "states", one configuration per timestep from 0 to the arrival. */
+    ompl_parc::TimedPath readStates(const json &robot, unsigned int dimension, const std::string &where)
+    {
+        const json &states = field(robot, "states", where);
+        if (!states.is_array() || states.empty())
+            fail(where + ".states must be a non-empty array");
+        std::vector<double> flat;
+        flat.reserve(states.size() * dimension);
+        for (std::size_t t = 0; t < states.size(); ++t)
+            readConfig(states[t], dimension, where + ".states[" + std::to_string(t) + "]", flat);
+        return ompl_parc::TimedPath::fromDense(dimension, flat);
+    }
+
+    /** Version 2: "arrival" and "pieces", each [start, offset, steps, from, to] (TimedPath). */
+    ompl_parc::TimedPath readPieces(const json &robot, unsigned int dimension, const std::string &where)
+    {
+        const std::size_t arrival = readCount(field(robot, "arrival", where), where + ".arrival");
+        const json &pieces = field(robot, "pieces", where);
+        if (!pieces.is_array() || pieces.empty())
+            fail(where + ".pieces must be a non-empty array");
+        ompl_parc::TimedPath path(dimension);
+        std::vector<double> from, to;
+        std::size_t expected = 0;  // where the next piece must start
+        for (std::size_t k = 0; k < pieces.size(); ++k)
+        {
+            const std::string at = where + ".pieces[" + std::to_string(k) + "]";
+            const json &piece = pieces[k];
+            if (!piece.is_array() || piece.size() != 5)
+                fail(at + " must be [start, offset, steps, from, to]");
+            const std::size_t start = readCount(piece[0], at + "[0]");
+            if (start != expected)
+                fail(at + " starts at timestep " + std::to_string(start) + ", expected " + std::to_string(expected) +
+                     " (pieces follow each other from timestep 0)");
+            from.clear();
+            to.clear();
+            readConfig(piece[3], dimension, at + "[3]", from);
+            readConfig(piece[4], dimension, at + "[4]", to);
+            std::size_t last = arrival;
+            if (k + 1 < pieces.size())
+            {
+                const json &next = pieces[k + 1];
+                if (!next.is_array() || next.empty())
+                    fail(where + ".pieces[" + std::to_string(k + 1) + "] must be [start, offset, steps, from, to]");
+                last = readCount(next[0], where + ".pieces[" + std::to_string(k + 1) + "][0]");
+                if (last <= start)
+                    fail(where + ".pieces must start at increasing timesteps");
+                --last;
+            }
+            if (last < start)
+                fail(where + ".arrival " + std::to_string(arrival) + " is before the last piece's start");
+            path.appendPiece({start, readCount(piece[1], at + "[1]"), readCount(piece[2], at + "[2]")}, from.data(),
+                             to.data(), last);
+            expected = last + 1;
+        }
+        return path;
+    }
 }  // namespace
 
 std::string ompl_parc::SolutionFile::toJson(const MultiRobotPlan &plan, const MultiRobotSpaceInformation &si)
 {
-    json robots = json::array();
+    // One robot per line: compact, yet a diff or a reader can still find a robot.
+    std::string text = json{{"format", FORMAT}, {"version", VERSION}, {"resolution", plan.getResolution()}}.dump();
+    text.pop_back();
+    text += ",\"robots\":[";
     for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
     {
-        json states = json::array();
-        const auto &flat = plan.getRobotPath(i);
-        const unsigned int d = plan.getDimension(i);
-        for (std::size_t k = 0; k + d <= flat.size(); k += d)
-            states.push_back(std::vector<double>(flat.begin() + k, flat.begin() + k + d));
-        robots.push_back(
-            {{"name", si.getRobot(i)->getName()}, {"kind", si.getRobot(i)->getKind()}, {"states", std::move(states)}});
+        const TimedPath &path = plan.getPath(i);
+        const unsigned int d = path.getDimension();
+        json pieces = json::array();
+        for (std::size_t k = 0; k < path.getPieceCount(); ++k)
+        {
+            const auto &p = path.getPiece(k);
+            pieces.push_back({p.start, p.offset, p.steps, std::vector<double>(path.getFrom(k), path.getFrom(k) + d),
+                              std::vector<double>(path.getTo(k), path.getTo(k) + d)});
+        }
+        const json robot = {{"name", si.getRobot(i)->getName()},
+                            {"kind", si.getRobot(i)->getKind()},
+                            {"arrival", path.getArrival()},
+                            {"pieces", std::move(pieces)}};
+        text += (i == 0 ? "\n " : ",\n ") + robot.dump();
     }
-    const json doc = {
-        {"format", FORMAT}, {"version", VERSION}, {"resolution", plan.getResolution()}, {"robots", std::move(robots)}};
-    return doc.dump(1);
+    return text + "\n]}";
 }
 
 void ompl_parc::SolutionFile::write(const std::string &path, const MultiRobotPlan &plan,
@@ -81,8 +166,8 @@ ompl_parc::MultiRobotPlan ompl_parc::SolutionFile::fromJson(const std::string &t
     if (!format.is_string() || format.get<std::string>() != FORMAT)
         fail("'format' must be \"" + std::string(FORMAT) + "\"");
     const json &version = field(doc, "version", "solution");
-    if (!version.is_number_integer() || version.get<int>() != VERSION)
-        fail("unsupported 'version' (this build reads version " + std::to_string(VERSION) + ")");
+    if (!version.is_number_integer() || version.get<int>() < 1 || version.get<int>() > VERSION)
+        fail("unsupported 'version' (this build reads versions 1 to " + std::to_string(VERSION) + ")");
     const json &resolution = field(doc, "resolution", "solution");
     if (!resolution.is_number() || !(resolution.get<double>() > 0.))
         fail("'resolution' must be a positive number");
@@ -107,25 +192,8 @@ ompl_parc::MultiRobotPlan ompl_parc::SolutionFile::fromJson(const std::string &t
         const json &kind = field(robots[i], "kind", where);
         if (!kind.is_string() || kind.get<std::string>() != robot.getKind())
             fail(where + ".kind must be \"" + robot.getKind() + "\"");
-        const json &states = field(robots[i], "states", where);
-        if (!states.is_array() || states.empty())
-            fail(where + ".states must be a non-empty array");
-        std::vector<double> flat;
-        flat.reserve(states.size() * dims[i]);
-        for (std::size_t t = 0; t < states.size(); ++t)
-        {
-            const json &state = states[t];
-            if (!state.is_array() || state.size() != dims[i])
-                fail(where + ".states[" + std::to_string(t) + "] must be an array of " + std::to_string(dims[i]) +
-                     " numbers");
-            for (const json &v : state)
-            {
-                if (!v.is_number())
-                    fail(where + ".states[" + std::to_string(t) + "] holds a non-number");
-                flat.push_back(v.get<double>());
-            }
-        }
-        plan.setRobotPath(i, std::move(flat));
+        plan.setPath(i, version.get<int>() == 1 ? readStates(robots[i], dims[i], where) :
+                                                  readPieces(robots[i], dims[i], where));
     }
     return plan;
 }

@@ -171,10 +171,12 @@ namespace
                 robot.computeBody(problem_.getGoal(i).data(), goals[i]);
                 include(starts[i]);
                 include(goals[i]);
+                std::vector<double> q(robot.getDimension());
                 for (std::size_t t : times_)
                 {
                     frames[i].emplace_back();
-                    robot.computeBody(plan_->getConfig(i, t), frames[i].back());
+                    plan_->getConfig(i, t, q.data());
+                    robot.computeBody(q.data(), frames[i].back());
                     include(frames[i].back());
                 }
             }

@@ -1,6 +1,5 @@
 #include "ompl_parc/model/MultiRobotPlan.h"
 
-#include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
@@ -17,92 +16,51 @@ namespace
         return static_cast<std::size_t>(std::ceil(d * resolution - 1e-9));
     }
 
-    /** Append to \e out the grid states of \e path over \e space, excluding the first state. */
-    template <typename Append>
-    void layOnGrid(const ob::StateSpacePtr &space, const og::PathGeometric &path, double resolution, Append append)
+    /** Call \e lay(from, to, steps) for each segment of \e path over \e space with the number of timesteps it
+        takes on the grid (segments of 0 steps included: TimedPath::appendMotion skips them). */
+    template <typename Lay>
+    void layOnGrid(const ob::StateSpacePtr &space, const og::PathGeometric &path, double resolution, Lay lay)
     {
-        ob::State *tmp = space->allocState();
+        if (path.getStateCount() == 0)
+            throw ompl::Exception("MultiRobotPlan", "cannot lay an empty path on the timestep grid");
         for (std::size_t k = 1; k < path.getStateCount(); ++k)
         {
             const ob::State *from = path.getState(k - 1), *to = path.getState(k);
-            const std::size_t steps = stepsFor(space->distance(from, to), resolution);
-            for (std::size_t s = 1; s <= steps; ++s)
-            {
-                if (s == steps)  // the waypoint itself, not a rounded interpolation of it
-                    space->copyState(tmp, to);
-                else
-                    space->interpolate(from, to, static_cast<double>(s) / static_cast<double>(steps), tmp);
-                append(tmp);
-            }
+            lay(from, to, stepsFor(space->distance(from, to), resolution));
         }
-        space->freeState(tmp);
     }
 }  // namespace
 
 ompl_parc::MultiRobotPlan::MultiRobotPlan(std::vector<unsigned int> dimensions, double resolution)
-    : dimensions_(std::move(dimensions)), paths_(dimensions_.size()), resolution_(resolution)
+    : resolution_(resolution)
 {
     if (!(resolution > 0.))
         throw ompl::Exception("MultiRobotPlan", "resolution must be positive");
+    for (unsigned int d : dimensions)
+        paths_.emplace_back(d);
 }
 
 ompl_parc::MultiRobotPlan::MultiRobotPlan(const MultiRobotSpaceInformation &si) : resolution_(si.getResolution())
 {
     for (const auto &robot : si.getRobots())
-        dimensions_.push_back(robot->getDimension());
-    paths_.resize(dimensions_.size());
+        paths_.emplace_back(robot->getDimension());
 }
 
-std::size_t ompl_parc::MultiRobotPlan::getArrival(std::size_t robot) const
+void ompl_parc::MultiRobotPlan::setPath(std::size_t robot, TimedPath path)
 {
-    const std::size_t n = getStateCount(robot);
-    if (n == 0)
-        throw ompl::Exception("MultiRobotPlan", "robot " + std::to_string(robot) + " has no states");
-    return n - 1;
+    if (path.getDimension() != getDimension(robot))
+        throw ompl::Exception("MultiRobotPlan", "path dimension differs from the robot's");
+    paths_[robot] = std::move(path);
 }
 
-const double *ompl_parc::MultiRobotPlan::getConfig(std::size_t robot, std::size_t t) const
+void ompl_parc::MultiRobotPlan::setRobotPath(std::size_t robot, const std::vector<double> &flat)
 {
-    return paths_[robot].data() + std::min(t, getArrival(robot)) * dimensions_[robot];
+    setPath(robot, TimedPath::fromDense(getDimension(robot), flat));
 }
 
-void ompl_parc::MultiRobotPlan::setRobotPath(std::size_t robot, std::vector<double> flat)
+void ompl_parc::MultiRobotPlan::splice(std::size_t robot, std::size_t from, std::size_t to, const TimedPath &segment)
 {
-    if (flat.size() % dimensions_.at(robot) != 0)
-        throw ompl::Exception("MultiRobotPlan", "path size is not a multiple of the robot's dimension");
-    paths_[robot] = std::move(flat);
-}
-
-void ompl_parc::MultiRobotPlan::appendConfig(std::size_t robot, const double *q)
-{
-    paths_.at(robot).insert(paths_[robot].end(), q, q + dimensions_[robot]);
-}
-
-void ompl_parc::MultiRobotPlan::splice(std::size_t robot, std::size_t from, std::size_t to,
-                                       const std::vector<double> &segment)
-{
-    const unsigned int d = dimensions_.at(robot);
-    auto &path = paths_[robot];
-    const std::size_t arrival = getArrival(robot);
-    if (from > to || segment.empty() || segment.size() % d != 0)
-        throw ompl::Exception("MultiRobotPlan", "invalid splice");
-    // States before the window; a robot that arrived earlier holds its goal until the window starts.
-    std::vector<double> spliced(path.begin(), path.begin() + std::min(from, arrival) * d);
-    for (std::size_t t = arrival; t < from; ++t)
-        spliced.insert(spliced.end(), path.end() - d, path.end());
-    spliced.insert(spliced.end(), segment.begin(), segment.end());
-    if (to < arrival)
-        spliced.insert(spliced.end(), path.begin() + (to + 1) * d, path.end());
-    path = std::move(spliced);
-    trimArrival(robot);
-}
-
-void ompl_parc::MultiRobotPlan::trimArrival(std::size_t robot)
-{
-    auto &p = paths_[robot];
-    const unsigned int d = dimensions_[robot];
-    while (p.size() > d && std::equal(p.end() - 2 * d, p.end() - d, p.end() - d))
-        p.resize(p.size() - d);
+    paths_.at(robot).splice(from, to, segment);
 }
 
 std::size_t ompl_parc::MultiRobotPlan::getMakespan() const
@@ -121,6 +79,14 @@ std::size_t ompl_parc::MultiRobotPlan::getSumOfCosts() const
     return s;
 }
 
+std::size_t ompl_parc::MultiRobotPlan::getPieceCount() const
+{
+    std::size_t n = 0;
+    for (const auto &path : paths_)
+        n += path.getPieceCount();
+    return n;
+}
+
 std::vector<std::size_t> ompl_parc::MultiRobotPlan::sampleTimesteps(std::size_t maxCount) const
 {
     const std::size_t makespan = getMakespan();
@@ -132,46 +98,59 @@ std::vector<std::size_t> ompl_parc::MultiRobotPlan::sampleTimesteps(std::size_t 
     return times;
 }
 
+std::vector<std::size_t> ompl_parc::MultiRobotPlan::getBreakpoints() const
+{
+    std::vector<std::size_t> times{0, getMakespan()};
+    for (const auto &path : paths_)
+        path.appendBreakpoints(times);
+    std::sort(times.begin(), times.end());
+    times.erase(std::unique(times.begin(), times.end()), times.end());
+    return times;
+}
+
 og::PathGeometricPtr ompl_parc::MultiRobotPlan::toPathGeometric(const MultiRobotSpaceInformationPtr &si) const
 {
     if (si->getRobotCount() != getRobotCount())
         throw ompl::Exception("MultiRobotPlan", "plan and space information have different team sizes");
     auto path = std::make_shared<og::PathGeometric>(si);
+    const auto times = getBreakpoints();
     // The path owns the states we allocate straight into it (append() would clone each one once more).
     auto &states = path->getStates();
-    states.resize(getMakespan() + 1);
-    allocateStates(*si, 0, states.size(), states.data());
+    states.resize(times.size());
+    allocateStates(*si, times, 0, times.size(), states.data());
     return path;
 }
 
-void ompl_parc::MultiRobotPlan::allocateStates(const MultiRobotSpaceInformation &si, std::size_t from, std::size_t to,
-                                               ob::State **out) const
+void ompl_parc::MultiRobotPlan::allocateStates(const MultiRobotSpaceInformation &si,
+                                               const std::vector<std::size_t> &times, std::size_t from,
+                                               std::size_t to, ob::State **out) const
 {
-    for (std::size_t t = from; t < to; ++t)
+    std::vector<TimedPath::Cursor> cursors;
+    for (const auto &path : paths_)
+        cursors.emplace_back(path);
+    for (std::size_t k = from; k < to; ++k)
     {
         ob::State *state = si.allocState();
         for (std::size_t i = 0; i < getRobotCount(); ++i)
-            std::copy_n(getConfig(i, t), dimensions_[i], si.getRobotValues(state, i));
-        out[t - from] = state;
+            cursors[i].get(times[k], si.getRobotValues(state, i));
+        out[k - from] = state;
     }
 }
 
-std::vector<std::vector<double>> ompl_parc::MultiRobotPlan::layTeamPath(const MultiRobotSpaceInformation &si,
-                                                                        const og::PathGeometric &path)
+std::vector<ompl_parc::TimedPath> ompl_parc::MultiRobotPlan::layTeamPath(const MultiRobotSpaceInformation &si,
+                                                                         const og::PathGeometric &path)
 {
     if (path.getStateCount() == 0)
         throw ompl::Exception("MultiRobotPlan", "cannot lay an empty path on the timestep grid");
-    std::vector<std::vector<double>> paths(si.getRobotCount());
-    const auto appendAll = [&](const ob::State *state)
-    {
-        for (std::size_t i = 0; i < si.getRobotCount(); ++i)
-        {
-            const double *q = si.getRobotValues(state, i);
-            paths[i].insert(paths[i].end(), q, q + si.getRobot(i)->getDimension());
-        }
-    };
-    appendAll(path.getState(0));
-    layOnGrid(si.getStateSpace(), path, si.getResolution(), appendAll);
+    std::vector<TimedPath> paths;
+    for (std::size_t i = 0; i < si.getRobotCount(); ++i)
+        paths.emplace_back(si.getRobot(i)->getDimension(), si.getRobotValues(path.getState(0), i));
+    layOnGrid(si.getStateSpace(), path, si.getResolution(),
+              [&](const ob::State *from, const ob::State *to, std::size_t steps)
+              {
+                  for (std::size_t i = 0; i < paths.size(); ++i)
+                      paths[i].appendMotion(si.getRobotValues(from, i), si.getRobotValues(to, i), steps);
+              });
     return paths;
 }
 
@@ -180,24 +159,26 @@ ompl_parc::MultiRobotPlan ompl_parc::MultiRobotPlan::fromPathGeometric(const Mul
 {
     MultiRobotPlan plan(si);
     plan.paths_ = layTeamPath(si, path);
-    for (std::size_t i = 0; i < si.getRobotCount(); ++i)
-        plan.trimArrival(i);
+    for (auto &p : plan.paths_)
+        p.trimArrival();
     return plan;
 }
 
-std::vector<double> ompl_parc::MultiRobotPlan::discretize(const Robot &robot, const og::PathGeometric &path,
-                                                          double resolution)
+ompl_parc::TimedPath ompl_parc::MultiRobotPlan::discretize(const Robot &robot, const og::PathGeometric &path,
+                                                           double resolution)
 {
     if (path.getStateCount() == 0)
         throw ompl::Exception("MultiRobotPlan", "cannot lay an empty path on the timestep grid");
-    std::vector<double> flat(robot.getDimension());
-    robot.stateToConfig(path.getState(0), flat.data());
-    std::vector<double> q(robot.getDimension());
+    const unsigned int d = robot.getDimension();
+    std::vector<double> from(d), to(d);
+    robot.stateToConfig(path.getState(0), from.data());
+    TimedPath timed(d, from.data());
     layOnGrid(robot.getStateSpace(), path, resolution,
-              [&](const ob::State *state)
+              [&](const ob::State *a, const ob::State *b, std::size_t steps)
               {
-                  robot.stateToConfig(state, q.data());
-                  flat.insert(flat.end(), q.begin(), q.end());
+                  robot.stateToConfig(a, from.data());
+                  robot.stateToConfig(b, to.data());
+                  timed.appendMotion(from.data(), to.data(), steps);
               });
-    return flat;
+    return timed;
 }

@@ -2,6 +2,7 @@
 #define OMPL_PARC_MULTI_ROBOT_PLAN_
 
 #include "ompl_parc/model/MultiRobotSpaceInformation.h"
+#include "ompl_parc/model/TimedPath.h"
 
 #include <ompl/geometric/PathGeometric.h>
 
@@ -9,11 +10,13 @@
 
 namespace ompl_parc
 {
-    /** \brief Time-parameterised paths of a robot team: robot i's configuration at every integer timestep.
+    /** \brief Time-parameterised paths of a robot team: robot i's configuration at every integer timestep,
+        stored as timed waypoints (one TimedPath of straight pieces per robot), never as a dense grid.
 
-        Timestep t of robot i is stored flat (getDimension(i) doubles each). A robot's last state is its
-        arrival; from then on it holds that state, so getConfig(i, t) is defined for every t >= 0. One
-        timestep moves a robot at most 1/resolution in its space's distance (vmax = 1). */
+        A robot's last timestep is its arrival; from then on it holds that state, so getConfig(i, t) is defined
+        for every t >= 0. One timestep moves a robot at most 1/resolution in its space's distance (vmax = 1).
+        Paths laid from OMPL paths (fromPathGeometric(), layTeamPath(), discretize()) give, at every timestep,
+        bit for bit the state the dense grid of earlier versions held. */
     class MultiRobotPlan
     {
       public:
@@ -24,68 +27,79 @@ namespace ompl_parc
         explicit MultiRobotPlan(const MultiRobotSpaceInformation &si);
 
         std::size_t getRobotCount() const { return paths_.size(); }
-        unsigned int getDimension(std::size_t robot) const { return dimensions_.at(robot); }
+        unsigned int getDimension(std::size_t robot) const { return paths_.at(robot).getDimension(); }
         double getResolution() const { return resolution_; }
 
-        /** \brief Number of timesteps stored for \e robot (its arrival + 1). */
-        std::size_t getStateCount(std::size_t robot) const { return paths_.at(robot).size() / dimensions_.at(robot); }
-        /** \brief Timestep at which \e robot reaches its last state. Requires at least one state. */
-        std::size_t getArrival(std::size_t robot) const;
+        /** \brief Number of timesteps with a state of \e robot's own (its arrival + 1; 0 if it has no path). */
+        std::size_t getStateCount(std::size_t robot) const
+        {
+            return paths_.at(robot).empty() ? 0 : paths_[robot].getArrival() + 1;
+        }
+        /** \brief Timestep at which \e robot reaches its last state. Requires a path. */
+        std::size_t getArrival(std::size_t robot) const { return paths_.at(robot).getArrival(); }
 
-        /** \brief Robot \e robot's configuration at timestep \e t (its last state once arrived). */
-        const double *getConfig(std::size_t robot, std::size_t t) const;
+        /** \brief Robot \e robot's configuration at timestep \e t (its last state once arrived) into \e out
+            (getDimension(robot) values). A binary search: scans over time use getPath(robot)'s Cursor. */
+        void getConfig(std::size_t robot, std::size_t t, double *out) const { paths_[robot].getConfig(t, out); }
 
-        const std::vector<double> &getRobotPath(std::size_t robot) const { return paths_.at(robot); }
-        /** \brief Replace a robot's path by \e flat (getDimension(robot) values per timestep). */
-        void setRobotPath(std::size_t robot, std::vector<double> flat);
-        void appendConfig(std::size_t robot, const double *q);
+        const TimedPath &getPath(std::size_t robot) const { return paths_.at(robot); }
+        /** \brief Replace a robot's path (of the robot's dimension). */
+        void setPath(std::size_t robot, TimedPath path);
 
-        /** \brief Replace robot \e robot's states at timesteps [from, to] by \e segment (a robot that
-            arrived before \e from holds its goal until then); the states after \e to follow the segment,
-            shifted in time by the difference in length. The arrival is then recomputed (trailing copies of
-            the final state are dropped). */
-        void splice(std::size_t robot, std::size_t from, std::size_t to, const std::vector<double> &segment);
+        /** \brief Replace a robot's path by the dense states \e flat (getDimension(robot) values per timestep). */
+        void setRobotPath(std::size_t robot, const std::vector<double> &flat);
+        /** \brief Robot \e robot's states at timesteps 0..arrival, flat: for tests and small plans only. */
+        std::vector<double> getRobotPath(std::size_t robot) const { return paths_.at(robot).toDense(); }
+
+        /** \brief Replace robot \e robot's states at timesteps [from, to] by \e segment (a robot that arrived
+            before \e from holds its goal until then); the states after \e to follow the segment, shifted in
+            time by the difference in length. The arrival is then recomputed (trailing copies of the final
+            state are dropped). O(pieces), whatever the number of timesteps. */
+        void splice(std::size_t robot, std::size_t from, std::size_t to, const TimedPath &segment);
 
         /** \brief Largest arrival timestep over the team. */
         std::size_t getMakespan() const;
         /** \brief Sum of the robots' arrival timesteps. */
         std::size_t getSumOfCosts() const;
+        /** \brief Total number of pieces over the team: what the plan's memory grows with. */
+        std::size_t getPieceCount() const;
 
         /** \brief Up to \e maxCount timesteps spread evenly (rounded) over 0 .. makespan, both ends included
             (at least 2, so a plan that never moves still gives a start and an end): the frames pictures
             draw of a long plan. */
         std::vector<std::size_t> sampleTimesteps(std::size_t maxCount) const;
 
-        /** \brief One composite state per timestep 0..makespan (returned by pointer: such paths are large and
-            OMPL's PathGeometric copies its states, so it is built once, in place). */
+        /** \brief The union of the robots' breakpoints (TimedPath::appendBreakpoints), sorted, with 0 and the
+            makespan: between two consecutive ones every robot moves on a straight line. */
+        std::vector<std::size_t> getBreakpoints() const;
+
+        /** \brief One composite state per breakpoint (getBreakpoints()): since OMPL interpolates a compound
+            state per component, linearly, the path is the plan's motion (returned by pointer: OMPL's
+            PathGeometric copies its states, so it is built once, in place). */
         ompl::geometric::PathGeometricPtr toPathGeometric(const MultiRobotSpaceInformationPtr &si) const;
 
-        /** \brief Allocate the composite states of timesteps [from, to) into \e out[0 .. to - from): the
+        /** \brief Allocate the composite states at timesteps times[from, to) into \e out[0 .. to - from): the
             piece of toPathGeometric() that several threads can do at once on disjoint ranges. */
-        void allocateStates(const MultiRobotSpaceInformation &si, std::size_t from, std::size_t to,
-                            ompl::base::State **out) const;
+        void allocateStates(const MultiRobotSpaceInformation &si, const std::vector<std::size_t> &times,
+                            std::size_t from, std::size_t to, ompl::base::State **out) const;
 
         /** \brief Lay a composite path on the timestep grid: each segment takes ceil(length x resolution)
             timesteps with all robots moving synchronised; trailing states at a robot's goal are dropped so
-            its arrival is when it stops moving. */
+            its arrival is when it stops moving. Dense paths (one state per timestep) are accepted too. */
         static MultiRobotPlan fromPathGeometric(const MultiRobotSpaceInformation &si,
                                                 const ompl::geometric::PathGeometric &path);
 
         /** \brief Lay a composite path of the team of \e si on the grid without trimming: every robot gets
             the same number of timesteps (a synchronised patch for a subproblem). */
-        static std::vector<std::vector<double>> layTeamPath(const MultiRobotSpaceInformation &si,
-                                                            const ompl::geometric::PathGeometric &path);
+        static std::vector<TimedPath> layTeamPath(const MultiRobotSpaceInformation &si,
+                                                  const ompl::geometric::PathGeometric &path);
 
         /** \brief Lay a single-robot path (over \e robot's own space) on the grid, as above. */
-        static std::vector<double> discretize(const Robot &robot, const ompl::geometric::PathGeometric &path,
-                                              double resolution);
+        static TimedPath discretize(const Robot &robot, const ompl::geometric::PathGeometric &path,
+                                    double resolution);
 
       private:
-        /** \brief Drop trailing copies of the robot's final state: it arrives when it stops for good. */
-        void trimArrival(std::size_t robot);
-
-        std::vector<unsigned int> dimensions_;
-        std::vector<std::vector<double>> paths_;
+        std::vector<TimedPath> paths_;
         double resolution_{128.};
     };
 }  // namespace ompl_parc

@@ -18,15 +18,19 @@ ompl_parc::DynamicObstacles::DynamicObstacles(RobotPtr robot, double resolution)
         throw ompl::Exception("DynamicObstacles", "resolution must be positive");
 }
 
-void ompl_parc::DynamicObstacles::addPath(const Robot &other, const std::vector<double> &path)
+void ompl_parc::DynamicObstacles::addPath(const Robot &other, const TimedPath &path)
 {
-    const unsigned int d = other.getDimension();
-    if (path.empty() || path.size() % d != 0)
+    if (path.empty() || path.getDimension() != other.getDimension())
         throw ompl::Exception("DynamicObstacles",
-                              "path of robot '" + other.getName() + "' is empty or not a multiple of its dimension");
-    std::vector<CollisionBody> bodies(path.size() / d);
+                              "path of robot '" + other.getName() + "' is empty or not of its dimension");
+    std::vector<CollisionBody> bodies(path.getArrival() + 1);
+    std::vector<double> q(path.getDimension());
+    TimedPath::Cursor cursor(path);
     for (std::size_t t = 0; t < bodies.size(); ++t)
-        other.computeBody(path.data() + t * d, bodies[t]);
+    {
+        cursor.get(t, q.data());
+        other.computeBody(q.data(), bodies[t]);
+    }
     bodies_.push_back(std::move(bodies));
 }
 

@@ -1,6 +1,7 @@
 #ifndef OMPL_PARC_DYNAMIC_OBSTACLES_
 #define OMPL_PARC_DYNAMIC_OBSTACLES_
 
+#include "ompl_parc/model/TimedPath.h"
 #include "ompl_parc/robots/Robot.h"
 
 #include <cstddef>
@@ -25,8 +26,9 @@ namespace ompl_parc
         const RobotPtr &getRobot() const { return robot_; }
         double getResolution() const { return resolution_; }
 
-        /** \brief Add robot \e other following \e path (getDimension() values per timestep, not empty). */
-        void addPath(const Robot &other, const std::vector<double> &path);
+        /** \brief Add robot \e other following \e path (not empty; its bodies are computed for timesteps
+            0..arrival). */
+        void addPath(const Robot &other, const TimedPath &path);
 
         std::size_t getPathCount() const { return bodies_.size(); }
 

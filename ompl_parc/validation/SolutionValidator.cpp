@@ -27,17 +27,27 @@ namespace
     constexpr std::size_t ROUND = 256;
 
     /** \brief The seam to the plan: the one place that reads its configurations. Robot \e robot's motion as
-        breakpoints, holding its last state from its arrival to \e makespan. The plan stores a state per
-        timestep, so every state is offered and straight runs merge into pieces; a plan of timed waypoints
-        hands over its waypoints instead (same interpolation, nothing else changes). */
+        breakpoints, holding its last state from its arrival to \e makespan: the plan's own breakpoints (between
+        consecutive ones a robot moves on a straight line, uniformly in time), read back through getConfig() at
+        those timesteps; pieces that continue each other's line merge. */
     LinearMotion readMotion(const ompl_parc::MultiRobotPlan &plan, std::size_t robot, std::size_t makespan)
     {
         LinearMotion motion(plan.getDimension(robot));
         const std::size_t arrival = plan.getArrival(robot);
-        for (std::size_t t = 0; t <= arrival; ++t)
-            motion.addBreakpoint(t, plan.getConfig(robot, t));
+        std::vector<std::size_t> times;
+        plan.getPath(robot).appendBreakpoints(times);
+        std::sort(times.begin(), times.end());
+        times.erase(std::unique(times.begin(), times.end()), times.end());
+        std::vector<double> q(plan.getDimension(robot));
+        for (std::size_t t : times)
+        {
+            if (t > arrival)
+                break;
+            plan.getConfig(robot, t, q.data());
+            motion.addBreakpoint(t, q.data());
+        }
         if (makespan > arrival)
-            motion.addBreakpoint(makespan, plan.getConfig(robot, arrival));
+            motion.addBreakpoint(makespan, q.data());
         return motion;
     }
 

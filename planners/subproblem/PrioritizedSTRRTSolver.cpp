@@ -66,7 +66,7 @@ std::vector<std::size_t> ompl_parc::PrioritizedSTRRTSolver::priorityOrder(std::s
     return order;
 }
 
-std::vector<double> ompl_parc::PrioritizedSTRRTSolver::planRobot(const ob::StateSpacePtr &space,
+ompl_parc::TimedPath ompl_parc::PrioritizedSTRRTSolver::planRobot(const ob::StateSpacePtr &space,
                                                                  const DynamicObstaclesPtr &obstacles,
                                                                  const std::vector<double> &start,
                                                                  const std::vector<double> &goal, std::size_t hold,
@@ -74,7 +74,7 @@ std::vector<double> ompl_parc::PrioritizedSTRRTSolver::planRobot(const ob::State
                                                                  std::uint_fast32_t seed) const
 {
     if (hold == 0 && start == goal)
-        return start;  // already there, and safe to stay
+        return TimedPath(static_cast<unsigned int>(start.size()), start.data());  // already there, and safe to stay
     const auto si = createSpaceTimeSpaceInformation(space, obstacles);
 
     auto pdef = std::make_shared<ob::ProblemDefinition>(si);
@@ -86,7 +86,7 @@ std::vector<double> ompl_parc::PrioritizedSTRRTSolver::planRobot(const ob::State
     planner.setProblemDefinition(pdef);
     planner.setup();
     if (planner.solve(ptc) != ob::PlannerStatus::EXACT_SOLUTION)
-        return {};
+        return TimedPath();
     return std::static_pointer_cast<SpaceTimeMotionValidator>(si->getMotionValidator())
         ->layOnGrid(*pdef->getSolutionPath()->as<og::PathGeometric>());
 }
@@ -100,7 +100,7 @@ bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &
         return false;
     const auto &team = local->getRobots();
 
-    std::vector<std::vector<double>> paths(team.size());
+    std::vector<TimedPath> paths(team.size());
     std::vector<std::size_t> planned;
     for (std::size_t k : priorityOrder(team.size(), seed))
     {
@@ -122,12 +122,11 @@ bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &
     }
 
     // Robots that arrive early wait at their goal (held safely from their arrival on).
-    std::size_t steps = 0;
+    std::size_t arrival = 0;
+    for (const auto &path : paths)
+        arrival = std::max(arrival, path.getArrival());
     for (std::size_t k = 0; k < team.size(); ++k)
-        steps = std::max(steps, paths[k].size() / team[k]->getDimension());
-    for (std::size_t k = 0; k < team.size(); ++k)
-        while (paths[k].size() / team[k]->getDimension() < steps)
-            paths[k].insert(paths[k].end(), subproblem.goals[k].begin(), subproblem.goals[k].end());
+        paths[k].appendHold(subproblem.goals[k].data(), arrival);
     patch.paths = std::move(paths);
     return true;
 }

@@ -52,10 +52,9 @@ namespace ompl_parc
       private:
         /** \brief One robot's timestep path from \e start to \e goal among \e obstacles, arriving no earlier
             than timestep \e hold, sampling in \e space; empty on failure. */
-        std::vector<double> planRobot(const ompl::base::StateSpacePtr &space, const DynamicObstaclesPtr &obstacles,
-                                      const std::vector<double> &start, const std::vector<double> &goal,
-                                      std::size_t hold, const ompl::base::PlannerTerminationCondition &ptc,
-                                      std::uint_fast32_t seed) const;
+        TimedPath planRobot(const ompl::base::StateSpacePtr &space, const DynamicObstaclesPtr &obstacles,
+                            const std::vector<double> &start, const std::vector<double> &goal, std::size_t hold,
+                            const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed) const;
 
         PrioritizedSTRRTSettings settings_;
     };

@@ -51,10 +51,10 @@ namespace
                     const InitialPlanner planner(problem);
                     for (std::size_t r = 0; r < ROBOTS; ++r)
                     {
-                        std::vector<double> path;
+                        TimedPath path;
                         if (!planner.plan(r, ob::timedPlannerTerminationCondition(60.), mixSeed(seed, r), path))
                             throw std::runtime_error("no initial path for robot " + std::to_string(r));
-                        plan.setRobotPath(r, std::move(path));
+                        plan.setPath(r, std::move(path));
                     }
                     out.push_back({std::move(problem), std::move(plan)});
                 }

@@ -139,7 +139,8 @@ namespace
     {
         static const MultiRobotProblem problem = scenarios::createPandaCage(8, 0);
         const InitialPlanner planner(problem, simplify);
-        std::vector<double> path, milliseconds;
+        TimedPath path;
+        std::vector<double> milliseconds;
         std::size_t i = 0, solved = 0;
         for (auto _ : state)
         {

@@ -44,7 +44,7 @@ namespace
             const auto &team = *problem_.getSpaceInformation();
             auto obstacles = std::make_shared<DynamicObstacles>(team.getRobot(0), team.getResolution());
             for (std::size_t r = 1; r < robots; ++r)
-                obstacles->addPath(*team.getRobot(r), straightPath(problem_, r));
+                obstacles->addPath(*team.getRobot(r), TimedPath::fromDense(2, straightPath(problem_, r)));
             si_ = createSpaceTimeSpaceInformation(team.getCompositeSpace()->getRobotSpace(0), obstacles);
         }
 
@@ -146,7 +146,7 @@ namespace
                              patch))
             {
                 solved += 1.;
-                makespan += static_cast<double>(patch.getDuration(2));
+                makespan += static_cast<double>(patch.getDuration());
             }
         }
         state.counters["success"] = solved / static_cast<double>(state.iterations());
