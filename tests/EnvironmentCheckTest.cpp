@@ -8,6 +8,7 @@
 #include "ompl_parc/robots/RakeMotionValidator.h"
 #include "ompl_parc/scenarios/PandaCage.h"
 
+#include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 
@@ -208,4 +209,46 @@ TEST(EnvironmentCheck, RobotSpacesUseTheRake)
     EXPECT_NE(
         std::dynamic_pointer_cast<RakeMotionValidator>(si->getRobot(0)->getSpaceInformation()->getMotionValidator()),
         nullptr);
+}
+
+TEST(EnvironmentCheck, DiscSweepNeverAcceptsWhatTheSamplesRejectAndCatchesTunnelling)
+{
+    ob::RealVectorBounds bounds(2);
+    bounds.setLow(-5.);
+    bounds.setHigh(5.);
+    const auto robot = std::make_shared<DiscRobot>("disc", mixedWorld(), 0.05, bounds);
+    const auto &si = robot->getSpaceInformation();
+    ob::DiscreteMotionValidator samples(si.get());
+    ob::ScopedState<> a(si), b(si);
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> u(-5., 5.);
+    std::size_t rejected = 0, motions = 0;
+    while (motions < 20000)
+    {
+        const double from[2] = {u(rng), u(rng)}, to[2] = {u(rng), u(rng)};
+        if (!robot->isValid(from))
+            continue;
+        robot->configToState(from, a.get());
+        robot->configToState(to, b.get());
+        const bool sampled = samples.checkMotion(a.get(), b.get()), swept = si->checkMotion(a.get(), b.get());
+        EXPECT_FALSE(swept && !sampled) << "motion " << motions;
+        EXPECT_EQ(swept, *robot->sweepValid(from, to));
+        rejected += swept ? 0 : 1;
+        ++motions;
+    }
+    EXPECT_GT(rejected, 2000u);
+    EXPECT_LT(rejected, 18000u);
+
+    // A disc hopping over a wall thinner than a timestep's motion: the samples miss it, the sweep does not.
+    auto world = std::make_shared<Environment>();
+    world->addBox2D("wall", 0., 0., 1e-4, 2.);
+    const auto small = std::make_shared<DiscRobot>("small", world, 1e-3, bounds);
+    small->setResolution(128.);
+    const double left[2] = {-0.003, 0.}, right[2] = {0.003, 0.};
+    ASSERT_TRUE(small->isValid(left) && small->isValid(right));
+    EXPECT_EQ(small->sweepValid(left, right), std::optional<bool>(false));
+    robot->configToState(left, a.get());
+    robot->configToState(right, b.get());
+    EXPECT_TRUE(ob::DiscreteMotionValidator(small->getSpaceInformation().get()).checkMotion(a.get(), b.get()));
+    EXPECT_FALSE(small->getSpaceInformation()->checkMotion(a.get(), b.get()));
 }

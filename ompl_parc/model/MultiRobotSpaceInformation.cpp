@@ -79,7 +79,7 @@ ompl_parc::MultiRobotSpaceInformation::MultiRobotSpaceInformation(std::vector<Ro
     setStateValidityChecker(checker);
     setMotionValidator(std::make_shared<RakeMotionValidator>(
         this, [checker](const double *configs, std::size_t count) { return checker->allValid(configs, count); },
-        checker.get()));
+        checker.get(), [checker](const double *from, const double *to) { return checker->sweepValid(from, to); }));
     setup();
 }
 

@@ -66,3 +66,10 @@ bool ompl_parc::MultiRobotValidityChecker::allValid(const double *configs, std::
     }
     return true;
 }
+
+std::optional<bool> ompl_parc::MultiRobotValidityChecker::sweepValid(const double *from, const double *to) const
+{
+    if (team_.size() != 1)
+        return std::nullopt;
+    return team_[0]->sweepValid(from, to);
+}

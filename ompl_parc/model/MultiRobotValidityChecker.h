@@ -26,6 +26,10 @@ namespace ompl_parc
             batch check of the team's RakeMotionValidator. */
         bool allValid(const double *configs, std::size_t count) const;
 
+        /** \brief Robot::sweepValid() of a team of one (the initial stage's single-robot planning); std::nullopt for
+            larger teams, whose robot pairs are checked at the samples. */
+        std::optional<bool> sweepValid(const double *from, const double *to) const;
+
       private:
         /** \brief True if two of the team's \e bodies overlap. */
         bool anyPairCollides(const std::vector<CollisionBody> &bodies) const;

@@ -21,3 +21,20 @@ void ompl_parc::DiscRobot::computeBody(const double *q, CollisionBody &body) con
     body.radius_[0] = radius_;
     body.updateBound();
 }
+
+std::optional<bool> ompl_parc::DiscRobot::sweepValid(const double *from, const double *to) const
+{
+    const auto &bounds = getBounds();
+    for (unsigned int d = 0; d < 2; ++d)
+        if (!(to[d] >= bounds.low[d] && to[d] <= bounds.high[d]))
+            return false;
+    thread_local CollisionBody sweep;
+    sweep.resize(1, from[0] == to[0] && from[1] == to[1]);
+    sweep.ax_[0] = from[0];
+    sweep.ay_[0] = from[1];
+    sweep.bx_[0] = to[0];
+    sweep.by_[0] = to[1];
+    sweep.az_[0] = sweep.bz_[0] = 0.;
+    sweep.radius_[0] = radius_;
+    return !getEnvironment()->collides(sweep);
+}

@@ -16,6 +16,11 @@ namespace ompl_parc
         std::string getKind() const override { return "disc"; }
         void computeBody(const double *q, CollisionBody &body) const override;
 
+        /** \brief Exact for a translation: the disc sweeps the capsule from \e from to \e to with its radius (tested
+            against the obstacles like any capsule), and the bounds box is convex, so \e to in bounds keeps the
+            whole motion in. One test per motion instead of one per timestep. */
+        std::optional<bool> sweepValid(const double *from, const double *to) const override;
+
         double getRadius() const { return radius_; }
 
       private:

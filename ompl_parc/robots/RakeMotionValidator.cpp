@@ -3,8 +3,9 @@
 #include <vector>
 
 ompl_parc::RakeMotionValidator::RakeMotionValidator(ompl::base::SpaceInformation *si, BatchCheck check,
-                                                    const ompl::base::StateValidityChecker *checker)
-  : ompl::base::DiscreteMotionValidator(si), check_(std::move(check)), checker_(checker)
+                                                    const ompl::base::StateValidityChecker *checker,
+                                                    SweepCheck sweep)
+  : ompl::base::DiscreteMotionValidator(si), check_(std::move(check)), sweep_(std::move(sweep)), checker_(checker)
 {
 }
 
@@ -21,12 +22,10 @@ bool ompl_parc::RakeMotionValidator::rake(unsigned int n, Check check)
     return true;
 }
 
-bool ompl_parc::RakeMotionValidator::checkBatched(const ompl::base::State *s1, const ompl::base::State *s2,
+bool ompl_parc::RakeMotionValidator::checkBatched(const std::vector<double> &from, const std::vector<double> &to,
                                                   unsigned int n) const
 {
-    thread_local std::vector<double> from, to, samples;
-    si_->getStateSpace()->copyToReals(from, s1);
-    si_->getStateSpace()->copyToReals(to, s2);
+    thread_local std::vector<double> samples;
     const std::size_t d = from.size();
     samples.resize(static_cast<std::size_t>(BATCH) * d);
     std::copy(to.begin(), to.end(), samples.begin());  // the end state first
@@ -57,7 +56,13 @@ bool ompl_parc::RakeMotionValidator::checkMotion(const ompl::base::State *s1, co
     const unsigned int n = space.validSegmentCount(s1, s2);
     bool valid;
     if (check_ && si_->getStateValidityChecker().get() == checker_)
-        valid = checkBatched(s1, s2, n);
+    {
+        thread_local std::vector<double> from, to;
+        space.copyToReals(from, s1);
+        space.copyToReals(to, s2);
+        const std::optional<bool> swept = sweep_ ? sweep_(from.data(), to.data()) : std::nullopt;
+        valid = swept ? *swept : checkBatched(from, to, n);
+    }
     else
     {
         valid = si_->isValid(s2);

@@ -4,6 +4,8 @@
 #include <ompl/base/DiscreteMotionValidator.h>
 
 #include <functional>
+#include <optional>
+#include <vector>
 
 namespace ompl_parc
 {
@@ -30,6 +32,10 @@ namespace ompl_parc
         /** \brief Checks \e count configurations (flat, the state's real values each): true if all are valid. */
         using BatchCheck = std::function<bool(const double *configs, std::size_t count)>;
 
+        /** \brief Checks the whole straight motion between two configurations at once where it can (see
+            Robot::sweepValid()); std::nullopt sends the motion to the samples. */
+        using SweepCheck = std::function<std::optional<bool>(const double *from, const double *to)>;
+
         /** \brief Samples per batch check: at least every kernel's lane count, small enough that a blocked motion
             stops early. */
         static constexpr unsigned int BATCH = 8;
@@ -38,9 +44,10 @@ namespace ompl_parc
 
         /** \brief Validates motions of \e si, whose states are real vectors or compounds of them. With \e check,
             batch by batch, as long as \e si's validity checker is still \e checker, the one \e check stands for
-            (a user who sets another one gets it asked, state by state). */
+            (a user who sets another one gets it asked, state by state); \e sweep, if given, is asked first. */
         explicit RakeMotionValidator(ompl::base::SpaceInformation *si, BatchCheck check = BatchCheck(),
-                                     const ompl::base::StateValidityChecker *checker = nullptr);
+                                     const ompl::base::StateValidityChecker *checker = nullptr,
+                                     SweepCheck sweep = SweepCheck());
 
         bool checkMotion(const ompl::base::State *s1, const ompl::base::State *s2) const override;
 
@@ -50,9 +57,11 @@ namespace ompl_parc
         template <typename Check>
         static bool rake(unsigned int n, Check check);
 
-        bool checkBatched(const ompl::base::State *s1, const ompl::base::State *s2, unsigned int n) const;
+        /** \brief The samples of the motion \e from .. \e to (real values) of \e n segments, batch by batch. */
+        bool checkBatched(const std::vector<double> &from, const std::vector<double> &to, unsigned int n) const;
 
         BatchCheck check_;
+        SweepCheck sweep_;
         const ompl::base::StateValidityChecker *checker_;
     };
 }  // namespace ompl_parc

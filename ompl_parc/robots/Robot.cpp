@@ -28,7 +28,8 @@ ompl_parc::Robot::Robot(std::string name, EnvironmentPtr environment, const ob::
     si_->setStateValidityChecker([this](const ob::State *state) { return isValid(state); });
     si_->setMotionValidator(std::make_shared<RakeMotionValidator>(
         si_.get(), [this](const double *configs, std::size_t count) { return allValid(configs, count); },
-        si_->getStateValidityChecker().get()));
+        si_->getStateValidityChecker().get(),
+        [this](const double *from, const double *to) { return sweepValid(from, to); }));
     setResolution(128.);
 }
 
@@ -71,6 +72,11 @@ bool ompl_parc::Robot::allValid(const double *configs, std::size_t count) const
         if (!isValid(configs + k * dimension_))
             return false;
     return true;
+}
+
+std::optional<bool> ompl_parc::Robot::sweepValid(const double *, const double *) const
+{
+    return std::nullopt;
 }
 
 bool ompl_parc::Robot::selfCollides(const CollisionBody &body) const

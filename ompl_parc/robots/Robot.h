@@ -8,6 +8,7 @@
 #include <ompl/base/spaces/RealVectorBounds.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -72,6 +73,11 @@ namespace ompl_parc
             once (UrdfArm) override it; the default checks them one by one, in order, stopping at the first
             invalid one. */
         virtual bool allValid(const double *configs, std::size_t count) const;
+
+        /** \brief Whether the straight motion from \e from (valid) to \e to is valid at every point of it, for kinds
+            that can tell at once, without samples (a translating disc sweeps a capsule: DiscRobot); std::nullopt
+            for the others, whose motions are checked sample by sample. Stricter than any sampling. */
+        virtual std::optional<bool> sweepValid(const double *from, const double *to) const;
 
         /** \brief True if the two bodies (of this robot) overlap in any listed self-collision pair. */
         bool selfCollides(const CollisionBody &body) const;
