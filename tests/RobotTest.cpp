@@ -5,6 +5,7 @@
 #include <ompl/util/Exception.h>
 
 #include <cmath>
+#include <random>
 
 using namespace ompl_parc;
 
@@ -120,4 +121,35 @@ TEST(Environment, CapsulesAgainstRotatedBoxAndSphere)
     body.clear();
     body.addSphere(5.9, 0., 0., 0.39);
     EXPECT_FALSE(env.collides(body));
+}
+
+TEST(DiscRobot, BoxOverConfigurationsIsTheUnionOfTheBodiesBoxes)
+{
+    ompl::base::RealVectorBounds bounds(2);
+    bounds.setLow(-5.);
+    bounds.setHigh(5.);
+    DiscRobot robot("disc", nullptr, 0.3, bounds);
+    std::mt19937 rng(4);
+    std::uniform_real_distribution<double> u(-5., 5.);
+    for (int trial = 0; trial < 200; ++trial)
+    {
+        double lo[2] = {u(rng), u(rng)}, hi[2];
+        for (int d = 0; d < 2; ++d)
+            hi[d] = lo[d] + std::uniform_real_distribution<double>(0., 2.)(rng);
+        std::array<double, 3> boxLo{1e9, 1e9, 1e9}, boxHi{-1e9, -1e9, -1e9}, unionLo = boxLo, unionHi = boxHi;
+        ASSERT_TRUE(robot.expandBoxOver(lo, hi, boxLo, boxHi));
+        CollisionBody body;
+        for (const double x : {lo[0], hi[0]})  // the corners reach the extremes; the box is their union
+            for (const double y : {lo[1], hi[1]})
+            {
+                const double q[2] = {x, y};
+                robot.computeBody(q, body);
+                body.expandBox(unionLo, unionHi);
+            }
+        for (int d = 0; d < 3; ++d)
+        {
+            EXPECT_DOUBLE_EQ(boxLo[d], unionLo[d]);
+            EXPECT_DOUBLE_EQ(boxHi[d], unionHi[d]);
+        }
+    }
 }

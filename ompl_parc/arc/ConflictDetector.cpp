@@ -53,11 +53,17 @@ const ompl_parc::ConflictDetector::SweptBounds &ompl_parc::ConflictDetector::swe
     const Robot &model = *si_.getRobot(robot);
     const std::size_t arrival = plan.getArrival(robot);
     TimedPath::Cursor cursor(plan.getPath(robot));
-    std::vector<double> q(model.getDimension());
+    std::vector<double> q(model.getDimension()), lo(model.getDimension()), hi(model.getDimension());
     const auto boxOf = [&](std::size_t from, std::size_t to)  // timesteps [from, to)
     {
         constexpr double INF = std::numeric_limits<double>::infinity();
         Box box{{INF, INF, INF}, {-INF, -INF, -INF}};
+        if (to > from)  // kinds that bound their body from a box of configurations: from the plan's pieces
+        {
+            plan.getPath(robot).bounds(from, to - 1, lo.data(), hi.data());
+            if (model.expandBoxOver(lo.data(), hi.data(), box.first, box.second))
+                return box;
+        }
         for (std::size_t t = from; t < to; ++t)
         {
             cursor.get(t, q.data());

@@ -2,6 +2,8 @@
 
 #include <ompl/util/Exception.h>
 
+#include <algorithm>
+
 ompl_parc::DiscRobot::DiscRobot(std::string name, EnvironmentPtr environment, double radius,
                                 const ompl::base::RealVectorBounds &bounds)
     : Robot(std::move(name), std::move(environment), bounds), radius_(radius)
@@ -37,4 +39,17 @@ std::optional<bool> ompl_parc::DiscRobot::sweepValid(const double *from, const d
     sweep.az_[0] = sweep.bz_[0] = 0.;
     sweep.radius_[0] = radius_;
     return !getEnvironment()->collides(sweep);
+}
+
+bool ompl_parc::DiscRobot::expandBoxOver(const double *lo, const double *hi, std::array<double, 3> &boxLo,
+                                         std::array<double, 3> &boxHi) const
+{
+    for (int d = 0; d < 2; ++d)
+    {
+        boxLo[d] = std::min(boxLo[d], lo[d] - radius_);
+        boxHi[d] = std::max(boxHi[d], hi[d] + radius_);
+    }
+    boxLo[2] = std::min(boxLo[2], -radius_);
+    boxHi[2] = std::max(boxHi[2], radius_);
+    return true;
 }

@@ -21,6 +21,11 @@ namespace ompl_parc
             whole motion in. One test per motion instead of one per timestep. */
         std::optional<bool> sweepValid(const double *from, const double *to) const override;
 
+        /** \brief The configuration box grown by the radius (z: the disc's own extent): exactly the union of the
+            bodies' boxes. */
+        bool expandBoxOver(const double *lo, const double *hi, std::array<double, 3> &boxLo,
+                           std::array<double, 3> &boxHi) const override;
+
         double getRadius() const { return radius_; }
 
       private:

@@ -79,6 +79,12 @@ std::optional<bool> ompl_parc::Robot::sweepValid(const double *, const double *)
     return std::nullopt;
 }
 
+bool ompl_parc::Robot::expandBoxOver(const double *, const double *, std::array<double, 3> &,
+                                     std::array<double, 3> &) const
+{
+    return false;
+}
+
 bool ompl_parc::Robot::selfCollides(const CollisionBody &body) const
 {
     // Most listed pairs are far apart: their capsules' bounding spheres (set by updateBound()) rule them out

@@ -7,6 +7,7 @@
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/spaces/RealVectorBounds.h>
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -78,6 +79,13 @@ namespace ompl_parc
             that can tell at once, without samples (a translating disc sweeps a capsule: DiscRobot); std::nullopt
             for the others, whose motions are checked sample by sample. Stricter than any sampling. */
         virtual std::optional<bool> sweepValid(const double *from, const double *to) const;
+
+        /** \brief For kinds whose body's bounding box follows from a box of configurations (a translating disc:
+            the configuration box grown by the radius): expand [\e boxLo, \e boxHi] to contain the body at every
+            configuration in [\e lo, \e hi] and return true; false (box untouched) for the others. Lets swept
+            bounds over many timesteps come from a plan's pieces instead of one body per timestep. */
+        virtual bool expandBoxOver(const double *lo, const double *hi, std::array<double, 3> &boxLo,
+                                   std::array<double, 3> &boxHi) const;
 
         /** \brief True if the two bodies (of this robot) overlap in any listed self-collision pair. */
         bool selfCollides(const CollisionBody &body) const;
