@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # One command from a fresh clone: install dependencies, build, run the whole test suite, then build
 # and run it again under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/), and the tests of the
-# parallel code under ThreadSanitizer (build-tsan/).
+# parallel code (P-ARC, the OR race, the worker pool, the threaded validator) under ThreadSanitizer (build-tsan/).
 # OMPL_PARC_SKIP_SANITIZERS=1 skips the sanitizer pass (for quick local iterations only; CI runs it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -17,5 +17,5 @@ if [ "${OMPL_PARC_SKIP_SANITIZERS:-0}" != "1" ]; then
     bash scripts/build.sh build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOMPL_PARC_SANITIZE=thread \
         -DOMPL_PARC_BUILD_BENCHMARKS=OFF
     TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$PWD/tests/tsan.supp" ctest --test-dir build-tsan --output-on-failure \
-        -j"$(nproc)" -R 'Parc|BatchDetection|WorkerPool|OrTaskRunner'
+        -j"$(nproc)" -R 'Parc|BatchDetection|WorkerPool|OrTaskRunner|SolutionValidator'
 fi
