@@ -39,11 +39,12 @@ namespace
         std::sort(times.begin(), times.end());
         times.erase(std::unique(times.begin(), times.end()), times.end());
         std::vector<double> q(plan.getDimension(robot));
+        ompl_parc::TimedPath::Cursor cursor(plan.getPath(robot));  // increasing times: no search per breakpoint
         for (std::size_t t : times)
         {
             if (t > arrival)
                 break;
-            plan.getConfig(robot, t, q.data());
+            cursor.get(t, q.data());
             motion.addBreakpoint(t, q.data());
         }
         if (makespan > arrival)
