@@ -2,11 +2,14 @@
 
 #include "ompl_parc/arc/ConflictDetector.h"
 #include "ompl_parc/arc/RepairCache.h"
+#include "ompl_parc/robots/DiscRobot.h"
+#include "ompl_parc/robots/PlanarArm.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <thread>
 
@@ -274,4 +277,104 @@ TEST(ConflictDetector, ALaterScanNeverResumesAPairPastItsKnownConflict)
     EXPECT_EQ(detector.getFrontier(0, 1), t);
     EXPECT_TRUE(detector.scan(plan, pair, 1400, 1800, false).empty());
     EXPECT_EQ(detector.getFrontier(0, 1), t);
+}
+
+namespace
+{
+    /** A team of discs (radius 0.25, one of 0.4) in an empty square, and optionally two planar arms reaching into
+        it, whose pairs the detector scans timestep by timestep while the disc pairs are scanned from pieces. */
+    MultiRobotSpaceInformationPtr discTeam(std::size_t discs, bool withArms)
+    {
+        auto env = std::make_shared<Environment>();
+        ompl::base::RealVectorBounds bounds(2), joints(2);
+        bounds.setLow(-10.);
+        bounds.setHigh(10.);
+        joints.setLow(-M_PI);
+        joints.setHigh(M_PI);
+        std::vector<RobotPtr> team;
+        for (std::size_t r = 0; r < discs; ++r)
+            team.push_back(std::make_shared<DiscRobot>("d" + std::to_string(r), env, r == 1 ? 0.4 : 0.25, bounds));
+        if (withArms)
+            for (double x : {-4., 4.})
+                team.push_back(std::make_shared<PlanarArm>("arm" + std::to_string(team.size()), env, x, 0., 0.,
+                                                           std::vector<double>{2., 2.}, 0.2, joints));
+        return std::make_shared<MultiRobotSpaceInformation>(team, 128.);
+    }
+
+    /** Paths of a few long straight pieces between random waypoints (what the planners lay), with holds. */
+    MultiRobotPlan piecewisePlan(const MultiRobotSpaceInformation &si, std::mt19937 &rng)
+    {
+        std::uniform_real_distribution<double> where(-3., 3.), angle(-3., 3.);
+        std::uniform_int_distribution<std::size_t> steps(0, 600), pieces(1, 5);
+        MultiRobotPlan plan(si);
+        for (std::size_t r = 0; r < si.getRobotCount(); ++r)
+        {
+            const bool disc = si.getRobot(r)->getKind() == "disc";
+            const auto draw = [&] { return disc ? std::vector<double>{where(rng), where(rng)}
+                                                : std::vector<double>{angle(rng), angle(rng)}; };
+            std::vector<double> q = draw();
+            TimedPath path(2, q.data());
+            for (std::size_t k = pieces(rng); k > 0; --k)
+            {
+                const std::vector<double> next = k % 3 == 0 ? q : draw();  // some pieces hold still
+                path.appendMotion(q.data(), next.data(), steps(rng));
+                q = next;
+            }
+            plan.setPath(r, path);
+        }
+        return plan;
+    }
+}  // namespace
+
+TEST(ConflictDetector, DiscPairsScannedFromPiecesMatchBruteForce)
+{
+    // Long straight pieces (up to 600 timesteps) and cuts of them (splices leave pieces with offsets), discs
+    // alone and among arms: ARC's and the workers' scans, and the frontiers, against every timestep and pair.
+    std::mt19937 rng(47);
+    int withConflicts = 0;
+    for (bool arms : {false, true})
+    {
+        const auto si = discTeam(6, arms);
+        for (int k = 0; k < 25; ++k)
+        {
+            auto plan = piecewisePlan(*si, rng);
+            const auto other = piecewisePlan(*si, rng);
+            const std::size_t robot = k % si->getRobotCount(), cut = plan.getArrival(robot) / 2;
+            plan.splice(robot, cut, cut + 40, other.getPath(robot));
+            withConflicts += !test::allConflicts(*si, plan).empty();
+            for (std::size_t h : {0, 64})
+                expectScansMatchBruteForce(*si, plan, h);
+        }
+    }
+    EXPECT_GT(withConflicts, 20);
+}
+
+TEST(ConflictDetector, GrazingDiscsAreDecidedExactlyAsAtEveryTimestep)
+{
+    // Two discs (radii 0.25 and 0.4) pass each other on parallel lines and on crossing ones, their closest
+    // distance a hair above, at or below the sum of the radii: the piece scan must agree with the bodies' test
+    // at every timestep, and the cases below and above must come out differently.
+    const auto si = discTeam(2, false);
+    int conflicting = 0, clear = 0;
+    for (double gap : {-1e-6, -1e-12, 0., 1e-12, 1e-6})
+        for (double slant : {0., 0.3})
+        {
+            const double y = 0.65 + gap;
+            MultiRobotPlan plan(*si);
+            const double a0[2] = {-5., 0.}, a1[2] = {5., 0.}, b0[2] = {5., y - slant}, b1[2] = {-5., y + slant};
+            TimedPath pa(2, a0), pb(2, b0);
+            pa.appendMotion(a0, a1, 1280);
+            pb.appendMotion(b0, b1, 1280);
+            plan.setPath(0, pa);
+            plan.setPath(1, pb);
+            const auto expected = test::allConflicts(*si, plan);
+            ConflictDetector detector(*si);
+            const auto found = detector.findEarliest(plan);
+            ASSERT_EQ(found.has_value(), !expected.empty()) << "gap " << gap << ", slant " << slant;
+            if (found)
+                EXPECT_EQ(*found, expected.front());
+            (found ? conflicting : clear)++;
+        }
+    EXPECT_GE(conflicting, 2);
+    EXPECT_GE(clear, 2);
 }

@@ -27,13 +27,13 @@ ompl_parc::DetectedBatch ompl_parc::BatchDetector::detect(const MultiRobotPlan &
     const auto skip = [&batch](std::size_t i, std::size_t j) { return batch.skipPair(i, j); };
     const std::size_t makespan = plan.getMakespan();
     std::vector<std::vector<Conflict>> found(workerPairs_.size());
-    for (std::size_t from = detector_.firstUnvalidated(plan); from <= makespan && !batch.full() && !ptc;
-         from += horizon_)
+    std::vector<std::size_t> resume(workerPairs_.size());
+    for (std::size_t from = detector_.firstUnvalidated(plan); from <= makespan && !batch.full() && !ptc;)
     {
         const std::size_t to = std::min<std::size_t>(from + horizon_, makespan + 1);
-        const auto cpu =
-            pool_.run([&](unsigned int worker)
-                      { found[worker] = detector_.scan(plan, workerPairs_[worker], from, to, earliestOnly, skip); });
+        const auto cpu = pool_.run(
+            [&](unsigned int worker)
+            { found[worker] = detector_.scan(plan, workerPairs_[worker], from, to, earliestOnly, skip, &resume[worker]); });
         // The coordinator merges the candidates in temporal order and grows the batch.
         const double mergeStart = StageClock::threadCpu();
         std::vector<Conflict> candidates;
@@ -47,6 +47,9 @@ ompl_parc::DetectedBatch ompl_parc::BatchDetector::detect(const MultiRobotPlan &
             batch.offer(c, cache.expand(c, window));
         }
         projected += *std::max_element(cpu.begin(), cpu.end()) + (StageClock::threadCpu() - mergeStart);
+        // The next round starts where some pair still needs checking: stretches every pair is known to be
+        // clear of (disc pairs are scanned ahead to their conflicts) cost no rounds.
+        from = std::max(to, *std::min_element(resume.begin(), resume.end()));
     }
     return {batch.getEntries(), projected};
 }

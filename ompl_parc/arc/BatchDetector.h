@@ -25,7 +25,9 @@ namespace ompl_parc
         pairs over the next H timesteps (the synchronisation horizon) for each pair's first conflict, skipping
         pairs the batch no longer needs; the coordinator then merges the candidates in temporal order, grows
         each into its robot set through the repair cache and offers it to the ConflictBatch, until the batch
-        holds W conflicts or the plan ends. The frontiers of the shared ConflictDetector carry over between
+        holds W conflicts or the plan ends. A round starts at the first timestep after the previous round's
+        window that some pair still needs checked, so stretches known to be clear (disc pairs are scanned
+        ahead from the plan's pieces) cost no rounds. The frontiers of the shared ConflictDetector carry over between
         calls. With W = 1 the batch is exactly the sequential earliest conflict (ARC's detection: its scans stop
         at the first timestep with a conflict), and robot-set growth happens here for ARC and P-ARC alike. */
     class BatchDetector

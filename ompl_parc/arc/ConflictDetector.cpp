@@ -1,5 +1,6 @@
 #include "ompl_parc/arc/ConflictDetector.h"
 
+#include "ompl_parc/arc/DiscPairScan.h"
 #include "ompl_parc/collision/CapsuleCollision.h"
 
 #include <algorithm>
@@ -28,6 +29,8 @@ ompl_parc::ConflictDetector::ConflictDetector(const MultiRobotSpaceInformation &
       sweptMutex_(new std::mutex[si.getRobotCount()]),
       robots_(si.getRobotCount())
 {
+    for (std::size_t r = 0; r < robots_; ++r)
+        discs_.push_back(dynamic_cast<const DiscRobot *>(si.getRobot(r).get()));
     for (std::size_t i = 0; i < robots_; ++i)
         for (std::size_t j = i + 1; j < robots_; ++j)
             pairs_.emplace_back(i, j);
@@ -101,7 +104,8 @@ std::optional<ompl_parc::Conflict> ompl_parc::ConflictDetector::findEarliest(con
 std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRobotPlan &plan,
                                                                    const std::vector<std::size_t> &pairs,
                                                                    std::size_t from, std::size_t to,
-                                                                   bool firstTimestepOnly, const PairFilter &skip)
+                                                                   bool firstTimestepOnly, const PairFilter &skip,
+                                                                   std::size_t *resume)
 {
     // The pairs that still need checking in [from, to): the next timestep each needs, the last one and
     // the end of the segment its swept bounds were last tested for. Frontiers are tracked here and written
@@ -112,38 +116,69 @@ std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRo
         std::size_t pair, next, end, boxedUntil;
     };
     std::vector<Active> active, finished;
-    std::vector<const SweptBounds *> swept(robots_, nullptr);
-    std::vector<CollisionBody> bodies(robots_);
-    std::size_t t = std::numeric_limits<std::size_t>::max();
+    std::vector<Conflict> conflicts;
+    std::size_t resumeAt = std::numeric_limits<std::size_t>::max();
+    CollisionBody discA, discB;
     for (std::size_t p : pairs)
     {
         const auto [i, j] = pairs_[p];
-        if (skip && skip(i, j))
-            continue;
-        const std::size_t end = std::min(std::max(plan.getArrival(i), plan.getArrival(j)), to - 1);
+        const std::size_t last = std::max(plan.getArrival(i), plan.getArrival(j)), f = frontier_[p];
         // A pair whose frontier lies before \e from has a known conflict (or an unchecked gap) there: it
         // must not be resumed at \e from, which would declare that stretch conflict-free.
-        if (frontier_[p] >= from && frontier_[p] <= end)
+        if (f < from || f > last)
+            continue;
+        if (f >= to)  // already known conflict-free up to a later timestep
         {
-            active.push_back({p, frontier_[p], end, 0});
-            t = std::min(t, frontier_[p]);
-            if (segmentLength_ > 0)
-                for (std::size_t r : {i, j})
-                    if (swept[r] == nullptr)
-                        swept[r] = &sweptBounds(plan, r, (to - 1) / segmentLength_, bodies[r]);
+            resumeAt = std::min(resumeAt, f);
+            continue;
         }
+        if (skip && skip(i, j))
+            continue;
+        if (discs_[i] != nullptr && discs_[j] != nullptr)
+        {
+            // Two discs: straight to the pair's first conflict or its end, from the pieces (however far past
+            // \e to: the frontier stops at the conflict, which a later window reports).
+            const auto contact =
+                DiscPairScan(*discs_[i], plan.getPath(i), *discs_[j], plan.getPath(j), discA, discB).firstContact(f, last);
+            frontier_[p] = contact ? *contact : last + 1;
+            if (contact && *contact < to)
+                conflicts.push_back({i, j, *contact});
+            else if (contact)
+                resumeAt = std::min(resumeAt, *contact);
+            continue;
+        }
+        active.push_back({p, f, std::min(last, to - 1), 0});
+    }
+    // ARC's scan stops at the first timestep with a conflict: the per-timestep pairs need not look further
+    // than the discs' earliest one.
+    if (firstTimestepOnly && !conflicts.empty())
+    {
+        const std::size_t earliest = std::min_element(conflicts.begin(), conflicts.end())->timestep;
+        for (Active &a : active)
+            a.end = std::min(a.end, earliest);
+    }
+    std::size_t t = std::numeric_limits<std::size_t>::max();
+    std::vector<const SweptBounds *> swept(active.empty() ? 0 : robots_, nullptr);
+    std::vector<CollisionBody> bodies(active.empty() ? 0 : robots_);
+    for (const Active &a : active)
+    {
+        t = std::min(t, a.next);
+        if (segmentLength_ > 0)
+            for (std::size_t r : {pairs_[a.pair].first, pairs_[a.pair].second})
+                if (swept[r] == nullptr)
+                    swept[r] = &sweptBounds(plan, r, (to - 1) / segmentLength_, bodies[r]);
     }
 
     // Bodies are computed once per robot and timestep, only for robots that some active pair needs; each robot's
     // configurations come from a cursor on its path (time only moves forward here) into its slot of `configs`.
     std::vector<std::size_t> stamp(robots_, std::numeric_limits<std::size_t>::max()), slot(robots_ + 1, 0);
     std::vector<TimedPath::Cursor> cursors;
-    for (std::size_t r = 0; r < robots_; ++r)
+    for (std::size_t r = 0; r < robots_ && !active.empty(); ++r)
     {
         cursors.emplace_back(plan.getPath(r));
         slot[r + 1] = slot[r] + plan.getDimension(r);
     }
-    std::vector<double> configs(slot.back());
+    std::vector<double> configs(active.empty() ? 0 : slot.back());
     const auto body = [&](std::size_t robot, std::size_t step) -> const CollisionBody &
     {
         if (stamp[robot] != step)
@@ -157,8 +192,8 @@ std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRo
     };
 
     // One pass over the active pairs per timestep that some pair needs; t then jumps to the next such one.
-    std::vector<Conflict> conflicts;
-    while (!active.empty() && !(firstTimestepOnly && !conflicts.empty()))
+    const std::size_t discConflicts = conflicts.size();
+    while (!active.empty() && !(firstTimestepOnly && conflicts.size() > discConflicts))
     {
         bool anyDone = false;
         std::size_t nextT = std::numeric_limits<std::size_t>::max();
@@ -198,8 +233,19 @@ std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRo
     }
     for (const auto *set : {&active, &finished})
         for (const Active &a : *set)
+        {
             frontier_[a.pair] = a.next;
+            const auto [i, j] = pairs_[a.pair];
+            if (a.next <= std::max(plan.getArrival(i), plan.getArrival(j)))
+                resumeAt = std::min(resumeAt, a.next);
+        }
+    if (resume != nullptr)
+        *resume = resumeAt;
     std::sort(conflicts.begin(), conflicts.end());  // retiring pairs reorders them
+    if (firstTimestepOnly && !conflicts.empty())
+        conflicts.erase(std::find_if(conflicts.begin(), conflicts.end(),
+                                     [&](const Conflict &c) { return c.timestep != conflicts.front().timestep; }),
+                        conflicts.end());
     return conflicts;
 }
 

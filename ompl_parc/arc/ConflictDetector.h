@@ -5,6 +5,7 @@
 #include "ompl_parc/collision/CollisionBody.h"
 #include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/model/MultiRobotSpaceInformation.h"
+#include "ompl_parc/robots/DiscRobot.h"
 
 #include <array>
 #include <functional>
@@ -25,9 +26,11 @@ namespace ompl_parc
         earliest-conflict search (ARC) and the per-worker scans of P-ARC; it only reads the plan and the
         frontiers of its own pairs, so disjoint pair subsets can be scanned concurrently.
 
-        Broad phase over time: each robot's path is cut into segments of H timesteps ([kH, (k+1)H)), and
-        each segment gets a swept bound, the axis-aligned box around the robot's bodies at all its
-        timesteps (after its arrival a robot keeps the box of its final body). A pair whose two boxes of
+        Pairs of discs need no broad phase: their scan works on the plan's straight pieces (DiscPairScan), at a
+        cost per piece. For the other kinds, the broad phase is over time: each robot's path is cut into
+        segments of H timesteps ([kH, (k+1)H)), and each segment gets a swept bound, the axis-aligned box
+        around the robot's bodies at all its timesteps (after its arrival a robot keeps the box of its final
+        body). A pair whose two boxes of
         a segment are disjoint cannot collide anywhere in it, so the scan advances that pair's frontier
         past the segment without per-timestep checks; the conflicts found are exactly those of the full
         scan. Swept bounds are computed lazily, per robot under that robot's mutex, by the first scan that
@@ -62,9 +65,17 @@ namespace ompl_parc
             pair is scanned to its own first conflict or to \e to, and all those first conflicts are returned
             in (timestep, pair) order. Pairs \e skip rejects are not checked, nor pairs whose frontier is before
             \e from (they stop at a known conflict). Frontiers of checked pairs advance to their first
-            unchecked or conflicting timestep: a frontier never passes an unchecked or conflicting timestep. */
+            unchecked or conflicting timestep: a frontier never passes an unchecked or conflicting timestep.
+
+            Pairs of two discs (DiscRobot) are scanned from the plan's pieces (DiscPairScan), straight to their
+            first conflict or their end, also past \e to: their frontiers may end up beyond \e to, and a conflict
+            found there is left for the scan whose range holds it. \e resume, if given, receives the earliest
+            timestep that a pair this scan considered (not skipped, frontier not before \e from) still needs
+            checked, or SIZE_MAX: a later scan of the same pairs may start there instead of at \e to, as nothing
+            between needs checking. */
         std::vector<Conflict> scan(const MultiRobotPlan &plan, const std::vector<std::size_t> &pairs, std::size_t from,
-                                   std::size_t to, bool firstTimestepOnly, const PairFilter &skip = {});
+                                   std::size_t to, bool firstTimestepOnly, const PairFilter &skip = {},
+                                   std::size_t *resume = nullptr);
 
         /** \brief The first timestep some pair of \e plan still needs checked (makespan + 1 if none). */
         std::size_t firstUnvalidated(const MultiRobotPlan &plan) const;
@@ -110,6 +121,8 @@ namespace ompl_parc
         const MultiRobotSpaceInformation &si_;
         std::size_t segmentLength_;
         std::vector<SweptBounds> swept_;
+        /** \brief Per robot, the DiscRobot it is, or null: pairs of two discs are scanned piece by piece. */
+        std::vector<const DiscRobot *> discs_;
         std::unique_ptr<std::mutex[]> sweptMutex_;
         std::size_t robots_;
         std::vector<std::size_t> frontier_;
