@@ -201,7 +201,10 @@ TEST(ConflictDetector, FrontiersResumeAndResetOnInvalidation)
         const Conflict c = *detector.findEarliest(plan);
         // Everything before the conflict is validated; the conflicting pair stops at the conflict.
         EXPECT_EQ(detector.getFrontier(c.first, c.second), c.timestep);
-        // Scanning again finds the same conflict (the frontier does not skip it).
+        // Scanning again finds the same conflict (the frontier does not skip it), also after a change of a path
+        // after the conflict (which leaves it known).
+        EXPECT_EQ(*detector.findEarliest(plan), c);
+        detector.invalidate(c.first, c.timestep + 1);
         EXPECT_EQ(*detector.findEarliest(plan), c);
         // Move robot c.first away for good from the conflict on: the next earliest must again match brute force.
         auto path = plan.getRobotPath(c.first);

@@ -28,7 +28,7 @@ ompl_parc::DetectedBatch ompl_parc::BatchDetector::detect(const MultiRobotPlan &
     const std::size_t makespan = plan.getMakespan();
     std::vector<std::vector<Conflict>> found(workerPairs_.size());
     std::vector<std::size_t> resume(workerPairs_.size());
-    for (std::size_t from = detector_.firstUnvalidated(plan); from <= makespan && !batch.full() && !ptc;)
+    for (std::size_t from = 0; from <= makespan && !batch.full() && !ptc;)
     {
         const std::size_t to = std::min<std::size_t>(from + horizon_, makespan + 1);
         const auto cpu = pool_.run(
@@ -47,8 +47,8 @@ ompl_parc::DetectedBatch ompl_parc::BatchDetector::detect(const MultiRobotPlan &
             batch.offer(c, cache.expand(c, window));
         }
         projected += *std::max_element(cpu.begin(), cpu.end()) + (StageClock::threadCpu() - mergeStart);
-        // The next round starts where some pair still needs checking: stretches every pair is known to be
-        // clear of (disc pairs are scanned ahead to their conflicts) cost no rounds.
+        // The next round starts where some pair still needs checking (the first round's scans tell where that
+        // is): stretches every pair is known to be clear of (disc pairs are scanned ahead) cost no rounds.
         from = std::max(to, *std::min_element(resume.begin(), resume.end()));
     }
     return {batch.getEntries(), projected};

@@ -35,6 +35,7 @@ ompl_parc::ConflictDetector::ConflictDetector(const MultiRobotSpaceInformation &
         for (std::size_t j = i + 1; j < robots_; ++j)
             pairs_.emplace_back(i, j);
     frontier_.assign(pairs_.size(), 0);
+    knownConflict_.assign(pairs_.size(), 0);
     allPairs_.resize(pairs_.size());
     for (std::size_t p = 0; p < pairs_.size(); ++p)
         allPairs_[p] = p;
@@ -119,10 +120,13 @@ std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRo
     std::vector<Conflict> conflicts;
     std::size_t resumeAt = std::numeric_limits<std::size_t>::max();
     CollisionBody discA, discB;
+    std::vector<std::size_t> arrival(robots_);
+    for (std::size_t r = 0; r < robots_; ++r)
+        arrival[r] = plan.getArrival(r);
     for (std::size_t p : pairs)
     {
         const auto [i, j] = pairs_[p];
-        const std::size_t last = std::max(plan.getArrival(i), plan.getArrival(j)), f = frontier_[p];
+        const std::size_t last = std::max(arrival[i], arrival[j]), f = frontier_[p];
         // A pair whose frontier lies before \e from has a known conflict (or an unchecked gap) there: it
         // must not be resumed at \e from, which would declare that stretch conflict-free.
         if (f < from || f > last)
@@ -134,6 +138,11 @@ std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRo
         }
         if (skip && skip(i, j))
             continue;
+        if (knownConflict_[p])  // found by an earlier scan, and neither path changed up to it since
+        {
+            conflicts.push_back({i, j, f});
+            continue;
+        }
         if (discs_[i] != nullptr && discs_[j] != nullptr)
         {
             // Two discs: straight to the pair's first conflict or its end, from the pieces (however far past
@@ -141,6 +150,7 @@ std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRo
             const auto contact =
                 DiscPairScan(*discs_[i], plan.getPath(i), *discs_[j], plan.getPath(j), discA, discB).firstContact(f, last);
             frontier_[p] = contact ? *contact : last + 1;
+            knownConflict_[p] = contact.has_value();
             if (contact && *contact < to)
                 conflicts.push_back({i, j, *contact});
             else if (contact)
@@ -212,6 +222,7 @@ std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRo
                 if (bodiesCollide(body(i, t), body(j, t)))
                 {
                     conflicts.push_back({i, j, t});
+                    knownConflict_[a.pair] = 1;
                     a.end = t;  // this pair is done: its frontier stays at the conflict
                 }
                 else
@@ -236,7 +247,7 @@ std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRo
         {
             frontier_[a.pair] = a.next;
             const auto [i, j] = pairs_[a.pair];
-            if (a.next <= std::max(plan.getArrival(i), plan.getArrival(j)))
+            if (a.next <= std::max(arrival[i], arrival[j]))
                 resumeAt = std::min(resumeAt, a.next);
         }
     if (resume != nullptr)
@@ -249,25 +260,17 @@ std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRo
     return conflicts;
 }
 
-std::size_t ompl_parc::ConflictDetector::firstUnvalidated(const MultiRobotPlan &plan) const
-{
-    std::size_t first = plan.getMakespan() + 1;
-    for (std::size_t p = 0; p < pairs_.size(); ++p)
-    {
-        const auto [i, j] = pairs_[p];
-        if (frontier_[p] <= std::max(plan.getArrival(i), plan.getArrival(j)))
-            first = std::min(first, frontier_[p]);
-    }
-    return first;
-}
-
 void ompl_parc::ConflictDetector::invalidate(std::size_t robot, std::size_t timestep)
 {
     for (std::size_t other = 0; other < robots_; ++other)
         if (other != robot)
         {
-            auto &f = frontier_[pairIndex(std::min(robot, other), std::max(robot, other))];
-            f = std::min(f, timestep);
+            const std::size_t p = pairIndex(std::min(robot, other), std::max(robot, other));
+            if (timestep <= frontier_[p])  // a conflict at the frontier may have changed
+            {
+                frontier_[p] = timestep;
+                knownConflict_[p] = 0;
+            }
         }
     SweptBounds &bounds = swept_[robot];
     bounds.current = false;

@@ -77,9 +77,6 @@ namespace ompl_parc
                                    std::size_t to, bool firstTimestepOnly, const PairFilter &skip = {},
                                    std::size_t *resume = nullptr);
 
-        /** \brief The first timestep some pair of \e plan still needs checked (makespan + 1 if none). */
-        std::size_t firstUnvalidated(const MultiRobotPlan &plan) const;
-
         /** \brief Robot \e robot's path changed from timestep \e timestep on: pulls back the frontiers of
             its pairs and drops its swept bounds from the segment of \e timestep on. Not during a scan. */
         void invalidate(std::size_t robot, std::size_t timestep);
@@ -126,6 +123,9 @@ namespace ompl_parc
         std::unique_ptr<std::mutex[]> sweptMutex_;
         std::size_t robots_;
         std::vector<std::size_t> frontier_;
+        /** \brief Per pair, 1 if its frontier is a conflict a scan found (reported again without a check until an
+            invalidation reaches it); char, not bool, so that workers write their own pairs' entries safely. */
+        std::vector<char> knownConflict_;
         std::vector<std::pair<std::size_t, std::size_t>> pairs_;
         std::vector<std::size_t> allPairs_;
     };
