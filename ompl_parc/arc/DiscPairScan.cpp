@@ -20,7 +20,8 @@ ompl_parc::DiscPairScan::DiscPairScan(const DiscRobot &a, const TimedPath &pathA
 {
 }
 
-ompl_parc::DiscPairScan::Motion ompl_parc::DiscPairScan::motionAt(const TimedPath &path, std::size_t t)
+ompl_parc::DiscPairScan::Motion ompl_parc::DiscPairScan::motionAt(const TimedPath &path, std::size_t &piece,
+                                                                   std::size_t t)
 {
     constexpr std::size_t FOREVER = std::numeric_limits<std::size_t>::max();
     double q[2];
@@ -28,21 +29,24 @@ ompl_parc::DiscPairScan::Motion ompl_parc::DiscPairScan::motionAt(const TimedPat
     if (t >= arrival)  // held from the arrival on
     {
         path.getConfig(arrival, q);
-        return {q[0], q[1], 0., 0., FOREVER};
+        return {q[0], q[1], 0., 0., t, FOREVER};
     }
-    const std::size_t k = path.locate(t);
-    const TimedPath::Piece &piece = path.getPiece(k);
-    const std::size_t coverEnd = k + 1 < path.getPieceCount() ? path.getPiece(k + 1).start - 1 : arrival;
-    const std::size_t local = piece.offset + (t - piece.start);
-    const double *from = path.getFrom(k), *to = path.getTo(k);
-    if (local >= piece.steps)  // past the piece's motion: it holds its end
-        return {to[0], to[1], 0., 0., coverEnd};
-    TimedPath::interpolate(from, to, local, piece.steps, 2, q);
-    const double steps = static_cast<double>(piece.steps);
+    if (piece >= path.getPieceCount())
+        piece = path.locate(t);
+    while (piece + 1 < path.getPieceCount() && path.getPiece(piece + 1).start <= t)
+        ++piece;
+    const TimedPath::Piece &p = path.getPiece(piece);
+    const std::size_t coverEnd = piece + 1 < path.getPieceCount() ? path.getPiece(piece + 1).start - 1 : arrival;
+    const std::size_t local = p.offset + (t - p.start);
+    const double *from = path.getFrom(piece), *to = path.getTo(piece);
+    if (local >= p.steps)  // past the piece's motion: it holds its end
+        return {to[0], to[1], 0., 0., t, coverEnd};
+    TimedPath::interpolate(from, to, local, p.steps, 2, q);
+    const double steps = static_cast<double>(p.steps);
     // The linear part ends where the local step reaches the piece's steps (its value there is `to`, which the
     // line reaches up to rounding).
-    return {q[0], q[1], (to[0] - from[0]) / steps, (to[1] - from[1]) / steps,
-            std::min(coverEnd, t + (piece.steps - local))};
+    return {q[0], q[1], (to[0] - from[0]) / steps, (to[1] - from[1]) / steps, t,
+            std::min(coverEnd, t + (p.steps - local))};
 }
 
 bool ompl_parc::DiscPairScan::collidesAt(std::size_t t)
@@ -58,18 +62,27 @@ bool ompl_parc::DiscPairScan::collidesAt(std::size_t t)
 std::optional<std::size_t> ompl_parc::DiscPairScan::firstContact(std::size_t from, std::size_t last)
 {
     const double radiusSum = a_.getRadius() + b_.getRadius();
+    std::size_t pieceA = std::numeric_limits<std::size_t>::max(), pieceB = pieceA;
+    Motion ma{}, mb{};
     for (std::size_t t = from; t <= last;)
     {
-        const Motion ma = motionAt(pathA_, t), mb = motionAt(pathB_, t);
+        // A motion is renewed only when it ends: the other one carries on across the stretches it spans.
+        if (t == from || t > ma.end)
+            ma = motionAt(pathA_, pieceA, t);
+        if (t == from || t > mb.end)
+            mb = motionAt(pathB_, pieceB, t);
         const std::size_t end = std::min({ma.end, mb.end, last});
         const double length = static_cast<double>(end - t);
         // Relative position d(u) = d0 + dv u at timestep t + u, u in [0, length]; closest approach at u*.
-        const double dx = ma.x - mb.x, dy = ma.y - mb.y, dvx = ma.vx - mb.vx, dvy = ma.vy - mb.vy;
+        const double sa = static_cast<double>(t - ma.time), sb = static_cast<double>(t - mb.time);
+        const double ax = ma.x + ma.vx * sa, ay = ma.y + ma.vy * sa, bx = mb.x + mb.vx * sb, by = mb.y + mb.vy * sb;
+        const double dx = ax - bx, dy = ay - by, dvx = ma.vx - mb.vx, dvy = ma.vy - mb.vy;
         const double speed2 = dvx * dvx + dvy * dvy, along = dx * dvx + dy * dvy;
         const double u = speed2 > 0. ? std::clamp(-along / speed2, 0., length) : 0.;
         const double ex = dx + dvx * u, ey = dy + dvy * u, closest2 = ex * ex + ey * ey;
         const double scale = 1. + std::max({std::abs(ma.x), std::abs(ma.y), std::abs(mb.x), std::abs(mb.y)}) +
-                             (std::abs(ma.vx) + std::abs(ma.vy) + std::abs(mb.vx) + std::abs(mb.vy)) * length;
+                             (std::abs(ma.vx) + std::abs(ma.vy) + std::abs(mb.vx) + std::abs(mb.vy)) *
+                                 (length + sa + sb);
         const double reach = radiusSum + RELATIVE_MARGIN * scale;
         if (!(closest2 >= reach * reach))  // (NaN included) the discs may touch around u*: check exactly there
         {

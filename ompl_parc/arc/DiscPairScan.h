@@ -30,14 +30,16 @@ namespace ompl_parc
         std::optional<std::size_t> firstContact(std::size_t from, std::size_t last);
 
       private:
-        /** \brief A disc's straight motion from timestep \e t on: position at \e t (exactly the path's), velocity
-            per timestep, and the last timestep it holds (the end of the piece, or of its linear part). */
+        /** \brief A disc's straight motion: position (exactly the path's) at timestep \e time, velocity per
+            timestep, and the last timestep it holds (the end of the piece, or of its linear part). */
         struct Motion
         {
             double x, y, vx, vy;
-            std::size_t end;
+            std::size_t time, end;
         };
-        static Motion motionAt(const TimedPath &path, std::size_t t);
+        /** \brief The motion of \e path from timestep \e t on; \e piece is the piece covering the previous
+            call's timestep (t only grows), or npos before the first call. */
+        static Motion motionAt(const TimedPath &path, std::size_t &piece, std::size_t t);
 
         /** \brief The exact per-timestep test. */
         bool collidesAt(std::size_t t);
