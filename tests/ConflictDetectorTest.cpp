@@ -381,3 +381,26 @@ TEST(ConflictDetector, GrazingDiscsAreDecidedExactlyAsAtEveryTimestep)
     EXPECT_GE(conflicting, 2);
     EXPECT_GE(clear, 2);
 }
+
+TEST(ConflictDetector, ConcurrentScansOfAMixedTeam)
+{
+    // Two threads scan interleaved pair subsets of discs among arms: disc pairs from pieces, arm pairs through
+    // the shared swept bounds; together they find each pair's first conflict, as brute force does.
+    std::mt19937 rng(53);
+    const auto si = discTeam(5, true);
+    for (int k = 0; k < 8; ++k)
+    {
+        const auto plan = piecewisePlan(*si, rng);
+        ConflictDetector detector(*si, 16);
+        std::vector<std::size_t> subsets[2];
+        for (std::size_t p = 0; p < detector.getPairCount(); ++p)
+            subsets[p % 2].push_back(p);
+        std::vector<Conflict> found[2];
+        std::thread other([&] { found[1] = detector.scan(plan, subsets[1], 0, plan.getMakespan() + 1, false); });
+        found[0] = detector.scan(plan, subsets[0], 0, plan.getMakespan() + 1, false);
+        other.join();
+        found[0].insert(found[0].end(), found[1].begin(), found[1].end());
+        std::sort(found[0].begin(), found[0].end());
+        EXPECT_EQ(found[0], firstPerPair(test::allConflicts(*si, plan)));
+    }
+}
