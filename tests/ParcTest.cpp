@@ -102,6 +102,42 @@ TEST_P(BatchDetection, MatchesTheSequentialScanAndTheDefinitions)
     EXPECT_GT(batches, 5);
 }
 
+/* One detector kept across calls, as the repair loop keeps it: pairs found conflict-free to their end leave the
+   workers' lists, and an invalidation of one of their robots must bring them back. Robot a's path is replaced
+   from timestep t on by a copy of robot b's (so a and b now collide), after a call settled their pair. */
+TEST(BatchDetection, SettledPairsAreScannedAgainAfterAnInvalidation)
+{
+    const auto problem = scenarios::createMobileCircle(8);
+    const auto &si = *problem.getSpaceInformation();
+    WorkerPool pool(2);
+    std::mt19937 rng(61);
+    std::uniform_int_distribution<std::size_t> robot(0, 7);
+    for (int k = 0; k < 20; ++k)
+    {
+        auto plan = test::randomWalkPlan(si, rng, 0.04);
+        ConflictDetector detector(si);
+        BatchDetector batches(detector, pool, 50, true);
+        const RepairCache cache;
+        batches.detect(plan, cache, 200, ob::plannerNonTerminatingCondition());
+        const std::size_t a = robot(rng), b = (a + 1 + robot(rng) % 7) % 8;
+        const std::size_t t = std::uniform_int_distribution<std::size_t>(0, plan.getArrival(a))(rng);
+        auto path = plan.getRobotPath(a);
+        path.resize(2 * t);
+        for (std::size_t s = t; s <= std::max(t, plan.getArrival(b)); ++s)
+        {
+            const auto q = test::config(plan, b, s);
+            path.insert(path.end(), q.begin(), q.end());
+        }
+        plan.setRobotPath(a, path);
+        batches.invalidate(a, t);
+        const auto all = test::allConflicts(si, plan);
+        ASSERT_FALSE(all.empty());
+        const auto after = batches.detect(plan, cache, 200, ob::plannerNonTerminatingCondition()).entries;
+        ASSERT_FALSE(after.empty());
+        EXPECT_EQ(after.front().conflict, all.front());
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(WorkersHorizons, BatchDetection,
                          testing::Combine(testing::Values(1u, 2u, 3u, 4u), testing::Values(1u, 7u, 50u, 400u),
                                           testing::Bool()),

@@ -8,32 +8,53 @@
 
 ompl_parc::BatchDetector::BatchDetector(ConflictDetector &detector, WorkerPool &pool, std::size_t horizon,
                                         bool optimistic)
-    : detector_(detector), pool_(pool), horizon_(horizon), optimistic_(optimistic), workerPairs_(pool.getWorkerCount())
+    : detector_(detector),
+      pool_(pool),
+      horizon_(horizon),
+      optimistic_(optimistic),
+      live_(pool.getWorkerCount()),
+      isLive_(detector.getPairCount(), 1)
 {
     if (horizon == 0)
         throw ompl::Exception("BatchDetector", "the horizon must be at least 1 timestep");
     for (std::size_t p = 0; p < detector_.getPairCount(); ++p)
-        workerPairs_[p % workerPairs_.size()].push_back(p);  // round-robin, as in the paper
+        live_[p % live_.size()].push_back(p);  // round-robin, as in the paper
+}
+
+void ompl_parc::BatchDetector::invalidate(std::size_t robot, std::size_t timestep)
+{
+    detector_.invalidate(robot, timestep);
+    const std::size_t robots = detector_.getRobotCount();
+    for (std::size_t other = 0; other < robots; ++other)
+        if (other != robot)
+        {
+            const std::size_t p = detector_.pairIndex(std::min(robot, other), std::max(robot, other));
+            if (!isLive_[p])
+            {
+                isLive_[p] = 1;
+                live_[p % live_.size()].push_back(p);
+            }
+        }
 }
 
 ompl_parc::DetectedBatch ompl_parc::BatchDetector::detect(const MultiRobotPlan &plan, const RepairCache &cache,
                                                           std::size_t window,
                                                           const ompl::base::PlannerTerminationCondition &ptc)
 {
-    ConflictBatch batch(optimistic_, workerPairs_.size(), plan.getRobotCount());
+    ConflictBatch batch(optimistic_, live_.size(), plan.getRobotCount());
     // A batch of one is the earliest conflict: scans may stop at the first timestep with one.
-    const bool earliestOnly = workerPairs_.size() == 1;
+    const bool earliestOnly = live_.size() == 1;
     double projected = 0.;
     const auto skip = [&batch](std::size_t i, std::size_t j) { return batch.skipPair(i, j); };
     const std::size_t makespan = plan.getMakespan();
-    std::vector<std::vector<Conflict>> found(workerPairs_.size());
-    std::vector<std::size_t> resume(workerPairs_.size());
+    std::vector<std::vector<Conflict>> found(live_.size());
+    std::vector<std::size_t> resume(live_.size());
     for (std::size_t from = 0; from <= makespan && !batch.full() && !ptc;)
     {
         const std::size_t to = std::min<std::size_t>(from + horizon_, makespan + 1);
         const auto cpu = pool_.run(
             [&](unsigned int worker)
-            { found[worker] = detector_.scan(plan, workerPairs_[worker], from, to, earliestOnly, skip, &resume[worker]); });
+            { found[worker] = detector_.scan(plan, live_[worker], from, to, earliestOnly, skip, &resume[worker]); });
         // The coordinator merges the candidates in temporal order and grows the batch.
         const double mergeStart = StageClock::threadCpu();
         std::vector<Conflict> candidates;
@@ -51,5 +72,15 @@ ompl_parc::DetectedBatch ompl_parc::BatchDetector::detect(const MultiRobotPlan &
         // is): stretches every pair is known to be clear of (disc pairs are scanned ahead) cost no rounds.
         from = std::max(to, *std::min_element(resume.begin(), resume.end()));
     }
+    for (auto &pairs : live_)  // settled pairs leave until one of their robots changes
+        pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
+                                   [&](std::size_t p)
+                                   {
+                                       if (!detector_.isSettled(plan, p))
+                                           return false;
+                                       isLive_[p] = 0;
+                                       return true;
+                                   }),
+                    pairs.end());
     return {batch.getEntries(), projected};
 }

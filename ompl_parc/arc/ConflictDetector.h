@@ -7,6 +7,7 @@
 #include "ompl_parc/model/MultiRobotSpaceInformation.h"
 #include "ompl_parc/robots/DiscRobot.h"
 
+#include <algorithm>
 #include <array>
 #include <functional>
 #include <memory>
@@ -80,6 +81,14 @@ namespace ompl_parc
         /** \brief Robot \e robot's path changed from timestep \e timestep on: pulls back the frontiers of
             its pairs and drops its swept bounds from the segment of \e timestep on. Not during a scan. */
         void invalidate(std::size_t robot, std::size_t timestep);
+
+        /** \brief True if pair \e pair (as by pairIndex()) is known conflict-free to its end in \e plan. */
+        bool isSettled(const MultiRobotPlan &plan, std::size_t pair) const
+        {
+            return frontier_[pair] > std::max(plan.getArrival(pairs_[pair].first), plan.getArrival(pairs_[pair].second));
+        }
+
+        std::size_t getRobotCount() const { return robots_; }
 
         /** \brief First timestep of pair (i, j), i < j, not yet known to be conflict-free. */
         std::size_t getFrontier(std::size_t i, std::size_t j) const { return frontier_[pairIndex(i, j)]; }

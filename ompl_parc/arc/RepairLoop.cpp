@@ -151,7 +151,7 @@ void ompl_parc::RepairLoop::applyRepair(const Repair &repair)
     const Subproblem &sub = repair.subproblem;
     repair.patch.spliceInto(plan_, sub);
     for (std::size_t robot : sub.robots)
-        detector_.invalidate(robot, sub.windowStart);
+        batchDetector_->invalidate(robot, sub.windowStart);
     const std::size_t duration = repair.patch.getDuration();
     cache_.add(sub.robots, sub.windowStart, sub.windowStart + duration);
     ++statistics_.repairs;
