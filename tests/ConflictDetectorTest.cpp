@@ -67,6 +67,24 @@ namespace
                       c != first.end() ? c->timestep : std::max(plan.getArrival(i), plan.getArrival(j)) + 1);
         }
     }
+
+    /** \brief Two threads scan interleaved pair subsets of \e plan with one detector (segment length \e h):
+        together they must find each pair's first conflict, as brute force does. */
+    void expectConcurrentScansMatchBruteForce(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan,
+                                              std::size_t h)
+    {
+        ConflictDetector detector(si, h);
+        std::vector<std::size_t> subsets[2];
+        for (std::size_t p = 0; p < detector.getPairCount(); ++p)
+            subsets[p % 2].push_back(p);
+        std::vector<Conflict> found[2];
+        std::thread other([&] { found[1] = detector.scan(plan, subsets[1], 0, plan.getMakespan() + 1, false); });
+        found[0] = detector.scan(plan, subsets[0], 0, plan.getMakespan() + 1, false);
+        other.join();
+        found[0].insert(found[0].end(), found[1].begin(), found[1].end());
+        std::sort(found[0].begin(), found[0].end());
+        EXPECT_EQ(found[0], firstPerPair(test::allConflicts(si, plan)));
+    }
 }  // namespace
 
 TEST(ConflictDetector, EarliestConflictMatchesBruteForceOnRandomPlans)
@@ -147,14 +165,7 @@ TEST(ConflictDetector, InvalidationDropsStaleSweptBounds)
         detector.scan(plan, pairs, 0, plan.getMakespan() + 1, false);
         const std::size_t a = robot(rng), b = (a + 1 + robot(rng) % (si.getRobotCount() - 1)) % si.getRobotCount();
         const std::size_t t = std::uniform_int_distribution<std::size_t>(0, plan.getArrival(a))(rng);
-        auto path = plan.getRobotPath(a);
-        path.resize(2 * t);
-        for (std::size_t s = t; s <= std::max(t, plan.getArrival(b)); ++s)
-        {
-            const auto q = test::config(plan, b, s);
-            path.insert(path.end(), q.begin(), q.end());
-        }
-        plan.setRobotPath(a, path);
+        test::followFrom(plan, a, b, t);
         detector.invalidate(a, t);
         ConflictDetector fresh(si, 16);
         EXPECT_EQ(detector.findEarliest(plan), fresh.findEarliest(plan));
@@ -172,17 +183,7 @@ TEST(ConflictDetector, ConcurrentScansOfDisjointPairSubsetsShareSweptBounds)
     for (int k = 0; k < 10; ++k)
     {
         const auto plan = test::randomWalkPlan(*problem.getSpaceInformation(), rng, 5. / 128.);
-        ConflictDetector detector(si, 8);
-        std::vector<std::size_t> subsets[2];
-        for (std::size_t p = 0; p < detector.getPairCount(); ++p)
-            subsets[p % 2].push_back(p);
-        std::vector<Conflict> found[2];
-        std::thread other([&] { found[1] = detector.scan(plan, subsets[1], 0, plan.getMakespan() + 1, false); });
-        found[0] = detector.scan(plan, subsets[0], 0, plan.getMakespan() + 1, false);
-        other.join();
-        found[0].insert(found[0].end(), found[1].begin(), found[1].end());
-        std::sort(found[0].begin(), found[0].end());
-        EXPECT_EQ(found[0], firstPerPair(test::allConflicts(si, plan)));
+        expectConcurrentScansMatchBruteForce(si, plan, 8);
     }
 }
 
@@ -391,16 +392,6 @@ TEST(ConflictDetector, ConcurrentScansOfAMixedTeam)
     for (int k = 0; k < 8; ++k)
     {
         const auto plan = piecewisePlan(*si, rng);
-        ConflictDetector detector(*si, 16);
-        std::vector<std::size_t> subsets[2];
-        for (std::size_t p = 0; p < detector.getPairCount(); ++p)
-            subsets[p % 2].push_back(p);
-        std::vector<Conflict> found[2];
-        std::thread other([&] { found[1] = detector.scan(plan, subsets[1], 0, plan.getMakespan() + 1, false); });
-        found[0] = detector.scan(plan, subsets[0], 0, plan.getMakespan() + 1, false);
-        other.join();
-        found[0].insert(found[0].end(), found[1].begin(), found[1].end());
-        std::sort(found[0].begin(), found[0].end());
-        EXPECT_EQ(found[0], firstPerPair(test::allConflicts(*si, plan)));
+        expectConcurrentScansMatchBruteForce(*si, plan, 16);
     }
 }

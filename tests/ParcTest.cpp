@@ -121,14 +121,7 @@ TEST(BatchDetection, SettledPairsAreScannedAgainAfterAnInvalidation)
         batches.detect(plan, cache, 200, ob::plannerNonTerminatingCondition());
         const std::size_t a = robot(rng), b = (a + 1 + robot(rng) % 7) % 8;
         const std::size_t t = std::uniform_int_distribution<std::size_t>(0, plan.getArrival(a))(rng);
-        auto path = plan.getRobotPath(a);
-        path.resize(2 * t);
-        for (std::size_t s = t; s <= std::max(t, plan.getArrival(b)); ++s)
-        {
-            const auto q = test::config(plan, b, s);
-            path.insert(path.end(), q.begin(), q.end());
-        }
-        plan.setRobotPath(a, path);
+        test::followFrom(plan, a, b, t);
         batches.invalidate(a, t);
         const auto all = test::allConflicts(si, plan);
         ASSERT_FALSE(all.empty());

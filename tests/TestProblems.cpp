@@ -126,3 +126,15 @@ ompl_parc::MultiRobotProblem ompl_parc::test::problemOfPlan(const MultiRobotSpac
     }
     return MultiRobotProblem(si, starts, goals);
 }
+
+void ompl_parc::test::followFrom(MultiRobotPlan &plan, std::size_t a, std::size_t b, std::size_t t)
+{
+    auto path = plan.getRobotPath(a);
+    path.resize(plan.getDimension(a) * t);
+    for (std::size_t s = t; s <= std::max(t, plan.getArrival(b)); ++s)
+    {
+        const auto q = config(plan, b, s);
+        path.insert(path.end(), q.begin(), q.end());
+    }
+    plan.setRobotPath(a, path);
+}

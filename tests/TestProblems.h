@@ -60,6 +60,10 @@ namespace ompl_parc::test
 
     /** \brief Robot \e robot's configuration at timestep \e t as a vector. */
     std::vector<double> config(const MultiRobotPlan &plan, std::size_t robot, std::size_t t);
+
+    /** \brief Replace robot \e a's path from timestep \e t on by robot \e b's (so that a and b collide from t on,
+        up to b's arrival): the change an invalidation of (a, t) must account for. */
+    void followFrom(MultiRobotPlan &plan, std::size_t a, std::size_t b, std::size_t t);
 }  // namespace ompl_parc::test
 
 #endif
