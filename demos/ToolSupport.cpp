@@ -16,12 +16,25 @@
 #include <ompl/util/Console.h>
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <iostream>
 #include <map>
+#include <optional>
+#include <sstream>
 #include <stdexcept>
 
 namespace po = boost::program_options;
+
+namespace
+{
+    /** Far above every built-in scenario's sizes (Planar Cross goes to 256, Mobile Cross runs at 1024), below
+        what the pair bookkeeping of a team could not hold (about 24 bytes per robot pair). */
+    constexpr std::uint64_t MAX_ROBOTS = 10000;
+    constexpr std::uint64_t MAX_TASK = 1000000;
+}  // namespace
 
 ompl_parc::MultiRobotProblem ompl_parc::tools::problemFromOptions(const po::variables_map &vm)
 {
@@ -32,7 +45,8 @@ ompl_parc::MultiRobotProblem ompl_parc::tools::problemFromOptions(const po::vari
         return ScenarioFile::read(vm["scenario-file"].as<std::string>());  // checks the endpoints itself
     }
     MultiRobotProblem problem = scenarios::createScenario(
-        vm["scenario"].as<std::string>(), vm["robots"].as<std::size_t>(), 128., vm["task"].as<std::size_t>());
+        vm["scenario"].as<std::string>(), parseInteger(vm["robots"].as<std::string>(), "--robots", 1, MAX_ROBOTS),
+        128., parseInteger(vm["task"].as<std::string>(), "--task", 0, MAX_TASK));
     const std::string reason = problem.checkEndpoints();
     if (!reason.empty())
         throw std::invalid_argument(reason);
@@ -41,6 +55,22 @@ ompl_parc::MultiRobotProblem ompl_parc::tools::problemFromOptions(const po::vari
 
 namespace
 {
+    /** The bounds of a declared numeric parameter range "lo:step:hi" (or "lo:hi"), if \e range is one. */
+    std::optional<std::pair<double, double>> numericRange(const std::string &range)
+    {
+        const auto first = range.find(':'), last = range.rfind(':');
+        if (first == std::string::npos)
+            return std::nullopt;
+        char *end = nullptr;
+        const double lo = std::strtod(range.c_str(), &end);
+        if (end != range.c_str() + first)
+            return std::nullopt;
+        const double hi = std::strtod(range.c_str() + last + 1, &end);
+        if (end == range.c_str() + last + 1 || *end != '\0')
+            return std::nullopt;
+        return std::make_pair(lo, hi);
+    }
+
     const std::map<std::string, ompl::base::PlannerAllocator> &planners()
     {
         static const std::map<std::string, ompl::base::PlannerAllocator> table = {
@@ -84,9 +114,9 @@ void ompl_parc::tools::addProblemOptions(po::options_description &options)
 {
     const std::string names = join(scenarios::scenarioNames());
     options.add_options()("scenario", po::value<std::string>()->default_value("mobile_cross"),
-                          ("built-in scenario: " + names).c_str())("robots", po::value<std::size_t>()->default_value(4),
+                          ("built-in scenario: " + names).c_str())("robots", po::value<std::string>()->default_value("4"),
                                                                    "number of robots of the built-in scenario")(
-        "task", po::value<std::size_t>()->default_value(0), "task of the built-in scenario (panda_cage: 0 to 4)")(
+        "task", po::value<std::string>()->default_value("0"), "task of the built-in scenario (panda_cage: 0 to 4)")(
         "scenario-file", po::value<std::string>(), "read the problem from this scenario file (JSON) instead");
 }
 
@@ -115,18 +145,25 @@ ompl::base::PlannerPtr ompl_parc::tools::createPlanner(const std::string &name,
         const auto eq = assignment.find('=');
         if (eq == std::string::npos)
             throw std::invalid_argument("--param needs key=value, got '" + assignment + "'");
-        const std::string key = assignment.substr(0, eq), value = assignment.substr(eq + 1);
-        if (!planner->params().hasParam(key))
-        {
-            std::vector<std::string> valid;
-            planner->params().getParamNames(valid);
-            throw std::invalid_argument("planner '" + name + "' has no parameter '" + key + "' (valid: " + join(valid) +
-                                        ")");
-        }
-        if (!planner->params().setParam(key, value))
-            throw std::invalid_argument("bad value '" + value + "' for parameter '" + key + "'");
+        setPlannerParameter(*planner, assignment.substr(0, eq), assignment.substr(eq + 1));
     }
     return planner;
+}
+
+void ompl_parc::tools::setPlannerParameter(ompl::base::Planner &planner, const std::string &key,
+                                           const std::string &value)
+{
+    if (!planner.params().hasParam(key))
+    {
+        std::vector<std::string> valid;
+        planner.params().getParamNames(valid);
+        throw std::invalid_argument("planner '" + planner.getName() + "' has no parameter '" + key +
+                                    "' (valid: " + join(valid) + ")");
+    }
+    if (const auto range = numericRange(planner.params().getParams().at(key)->getRangeSuggestion()))
+        parseReal(value, "parameter '" + key + "'", range->first, range->second);
+    if (!planner.params().setParam(key, value))
+        throw std::invalid_argument("bad value '" + value + "' for parameter '" + key + "'");
 }
 
 ompl_parc::MultiRobotPlan ompl_parc::tools::planOf(const ompl::base::Planner &planner,
@@ -142,6 +179,31 @@ ompl_parc::MultiRobotPlan ompl_parc::tools::planOf(const ompl::base::Planner &pl
     if (simplify)
         ompl::geometric::PathSimplifier(si).simplify(path, 1.0);
     return MultiRobotPlan::fromPathGeometric(*si, path);
+}
+
+std::uint64_t ompl_parc::tools::parseInteger(const std::string &text, const std::string &what, std::uint64_t lo,
+                                             std::uint64_t hi)
+{
+    std::uint64_t value = 0;
+    const char *end = text.data() + text.size();
+    const auto [ptr, error] = std::from_chars(text.data(), end, value);
+    if (text.empty() || error != std::errc() || ptr != end || value < lo || value > hi)
+        throw std::invalid_argument(what + " must be a whole number from " + std::to_string(lo) + " to " +
+                                    std::to_string(hi) + " (got '" + text + "')");
+    return value;
+}
+
+double ompl_parc::tools::parseReal(const std::string &text, const std::string &what, double lo, double hi)
+{
+    char *end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) || value < lo || value > hi)
+    {
+        std::ostringstream message;
+        message << what << " must be a number from " << lo << " to " << hi << " (got '" << text << "')";
+        throw std::invalid_argument(message.str());
+    }
+    return value;
 }
 
 po::variables_map ompl_parc::tools::parse(int argc, char **argv, const po::options_description &options,

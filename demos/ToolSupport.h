@@ -7,6 +7,7 @@
 #include <boost/program_options.hpp>
 #include <ompl/base/Planner.h>
 
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -38,11 +39,25 @@ namespace ompl_parc::tools
     ompl::base::PlannerPtr createPlanner(const std::string &name, const ompl::base::SpaceInformationPtr &si,
                                          const std::vector<std::string> &params);
 
+    /** \brief Sets declared parameter \e key of \e planner to \e value; throws std::invalid_argument listing the
+        valid names for an unknown key, naming the declared range for a number outside it (OMPL itself neither
+        checks ranges nor refuses "-1" for an unsigned parameter), or for a value the parameter does not take. */
+    void setPlannerParameter(ompl::base::Planner &planner, const std::string &key, const std::string &value);
+
     /** \brief The solution of \e planner (after a solve with an exact solution) on the timestep grid, as the
         validator checks it: ARC-family (OR-P-ARC included) and prioritised planners' own plans; a composite path
        (OMPL's planners and the coupled baselines) laid on the grid with MultiRobotPlan::fromPathGeometric, after one
        second of OMPL's shortcutting if \e simplify (the path in the ProblemDefinition is simplified in place). */
     MultiRobotPlan planOf(const ompl::base::Planner &planner, const MultiRobotSpaceInformationPtr &si, bool simplify);
+
+    /** \brief \e text as a whole number in [\e lo, \e hi], digits only: no sign, no fraction, no wrapping of
+        negative numbers into huge ones. Throws std::invalid_argument "WHAT must be a whole number from LO to HI
+        (got 'TEXT')" otherwise. Numeric command-line options are declared as text and read through it. */
+    std::uint64_t parseInteger(const std::string &text, const std::string &what, std::uint64_t lo, std::uint64_t hi);
+
+    /** \brief \e text as a finite number in [\e lo, \e hi] (the whole text); throws std::invalid_argument
+        "WHAT must be a number from LO to HI (got 'TEXT')" otherwise. */
+    double parseReal(const std::string &text, const std::string &what, double lo, double hi);
 
     /** \brief Parses \e argc/\e argv into a variables map (throws on unknown or malformed options). */
     boost::program_options::variables_map parse(

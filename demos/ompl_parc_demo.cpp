@@ -91,9 +91,9 @@ int main(int argc, char **argv)
             options.add_options()("planner", po::value<std::string>()->default_value("arc"), plannerHelp.c_str())(
                 "param", po::value<std::vector<std::string>>()->composing(),
                 "planner parameter key=value (repeatable; declared names, e.g. window=100)")(
-                "seed", po::value<std::uint32_t>()->default_value(1), "random seed")(
-                "time-limit", po::value<double>()->default_value(30.), "planning time limit in seconds")(
-                "workers", po::value<unsigned int>(), "worker threads of a parallel planner (its 'workers' parameter)")(
+                "seed", po::value<std::string>()->default_value("1"), "random seed")(
+                "time-limit", po::value<std::string>()->default_value("30"), "planning time limit in seconds")(
+                "workers", po::value<std::string>(), "worker threads of a parallel planner (its 'workers' parameter)")(
                 "out", po::value<std::string>(), "write the solution to this JSON file")(
                 "no-validate", "skip the independent validation of the solution (timing and memory runs)")(
                 "picture", po::value<std::string>(),
@@ -108,10 +108,12 @@ int main(int argc, char **argv)
                 std::cout << options << std::endl;
                 return static_cast<int>(tools::EXIT_SOLVED);
             }
-            const double timeLimit = vm["time-limit"].as<double>();
+            // Longer than about four months, a limit is no limit, and OMPL's clock overflows near 1e10 s.
+            const double timeLimit = tools::parseReal(vm["time-limit"].as<std::string>(), "--time-limit", 0., 1e7);
             if (!(timeLimit > 0.))
                 throw std::invalid_argument("--time-limit must be positive");
-            ompl::RNG::setSeed(vm["seed"].as<std::uint32_t>());
+            ompl::RNG::setSeed(static_cast<std::uint32_t>(
+                tools::parseInteger(vm["seed"].as<std::string>(), "--seed", 0, UINT32_MAX)));
 
             const MultiRobotProblem problem = tools::problemFromOptions(vm);
             const auto &si = problem.getSpaceInformation();
@@ -124,8 +126,7 @@ int main(int argc, char **argv)
                 if (!planner->params().hasParam("workers"))
                     throw std::invalid_argument("--workers needs a parallel planner (parc); '" +
                                                 vm["planner"].as<std::string>() + "' has no 'workers' parameter");
-                if (!planner->params().setParam("workers", std::to_string(vm["workers"].as<unsigned int>())))
-                    throw std::invalid_argument("bad value for --workers (1 to 64)");
+                tools::setPlannerParameter(*planner, "workers", vm["workers"].as<std::string>());
             }
             planner->setProblemDefinition(pdef);
             planner->setup();

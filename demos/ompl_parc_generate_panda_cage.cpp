@@ -26,10 +26,10 @@ int main(int argc, char **argv)
         {
             po::options_description options("Usage: ompl_parc_generate_panda_cage --out-dir DIR [options]\nOptions");
             options.add_options()("out-dir", po::value<std::string>(), "write the scenario files into this folder")(
-                "robots", po::value<std::vector<std::size_t>>()->composing(),
+                "robots", po::value<std::vector<std::string>>()->composing(),
                 "team size to generate (repeatable; default 2, 4, 8 and 16)")(
-                "task", po::value<std::vector<std::size_t>>()->composing(),
-                "task to generate (repeatable; default all)")("seed", po::value<unsigned int>()->default_value(1),
+                "task", po::value<std::vector<std::string>>()->composing(),
+                "task to generate (repeatable; default all)")("seed", po::value<std::string>()->default_value("1"),
                                                               "ARC seed parameter of the conflict report")(
                 "help,h", "show this help");
             const auto vm = tools::parse(argc, argv, options);
@@ -40,12 +40,21 @@ int main(int argc, char **argv)
             }
             if (!vm.count("out-dir"))
                 throw std::invalid_argument("no --out-dir given (see --help)");
-            const auto teams =
-                vm.count("robots") ? vm["robots"].as<std::vector<std::size_t>>() : scenarios::pandaCageTeamSizes();
+            const auto numbers = [&vm](const char *name, std::uint64_t hi)
+            {
+                std::vector<std::size_t> values;
+                for (const auto &text : vm[name].as<std::vector<std::string>>())
+                    values.push_back(tools::parseInteger(text, std::string("--") + name, 0, hi));
+                return values;
+            };
+            // The generator's own checks name the team sizes and tasks it has; these bounds only stop wrapping.
+            const auto teams = vm.count("robots") ? numbers("robots", 1000) : scenarios::pandaCageTeamSizes();
             std::vector<std::size_t> tasks(scenarios::PANDA_CAGE_TASKS);
             std::iota(tasks.begin(), tasks.end(), 0);
             if (vm.count("task"))
-                tasks = vm["task"].as<std::vector<std::size_t>>();
+                tasks = numbers("task", 1000);
+            const auto seed =
+                static_cast<unsigned int>(tools::parseInteger(vm["seed"].as<std::string>(), "--seed", 0, UINT32_MAX));
             for (std::size_t robots : teams)
                 for (std::size_t task : tasks)
                 {
@@ -59,7 +68,7 @@ int main(int argc, char **argv)
                     ScenarioFile::write(path, problem);
                     std::cout << path << "  generated in " << std::fixed << std::setprecision(1) << seconds
                               << " s, conflicting pairs "
-                              << scenarios::countConflictingPairs(problem, vm["seed"].as<unsigned int>()) << " of "
+                              << scenarios::countConflictingPairs(problem, seed) << " of "
                               << robots * (robots - 1) / 2 << std::endl;
                 }
             return static_cast<int>(tools::EXIT_SOLVED);

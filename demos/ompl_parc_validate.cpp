@@ -20,9 +20,9 @@ int main(int argc, char **argv)
         {
             po::options_description options("Usage: ompl_parc_validate [options] SOLUTION.json\nOptions");
             tools::addProblemOptions(options);
-            options.add_options()("substeps", po::value<unsigned int>()->default_value(4),
+            options.add_options()("substeps", po::value<std::string>()->default_value("4"),
                                   "fewest samples per timestep interval between timesteps (1: timesteps only)")(
-                "threads", po::value<unsigned int>()->default_value(0), "threads of the check (0: one per core)")(
+                "threads", po::value<std::string>()->default_value("0"), "threads of the check (0: one per core)")(
                 "solution", po::value<std::string>(), "solution file")("help,h", "show this help");
             po::positional_options_description positional;
             positional.add("solution", 1);
@@ -40,8 +40,11 @@ int main(int argc, char **argv)
                 SolutionFile::read(vm["solution"].as<std::string>(), *problem.getSpaceInformation());
             const double readTime = ompl::time::seconds(ompl::time::now() - start);
             ValidationOptions validation;
-            validation.substeps = vm["substeps"].as<unsigned int>();
-            validation.threads = vm["threads"].as<unsigned int>();
+            // More samples per timestep than 1024 only make the check slower (the continuous check is exact).
+            validation.substeps =
+                static_cast<unsigned int>(tools::parseInteger(vm["substeps"].as<std::string>(), "--substeps", 1, 1024));
+            validation.threads =
+                static_cast<unsigned int>(tools::parseInteger(vm["threads"].as<std::string>(), "--threads", 0, 1024));
             const ompl::time::point checkStart = ompl::time::now();
             const ValidationReport report = SolutionValidator(problem, validation).validate(plan);
             const double checkTime = ompl::time::seconds(ompl::time::now() - checkStart);

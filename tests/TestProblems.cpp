@@ -2,6 +2,7 @@
 
 #include "ompl_parc/robots/DiscRobot.h"
 
+#include <algorithm>
 #include <cmath>
 
 ompl::base::PlannerStatus ompl_parc::test::solveWith(ompl::base::Planner &planner, const MultiRobotProblem &problem,

@@ -44,6 +44,9 @@ echo '{"format": "ompl_parc.solution", "version": 1' >"$tmp/truncated.json"
 expect 2 "not valid JSON" "$bin/ompl_parc_validate" "$tmp/truncated.json"
 expect 2 "cannot open" "$bin/ompl_parc_validate" "$tmp/missing.json"
 expect 2 "no solution file" "$bin/ompl_parc_validate"
+expect 2 "substeps must be a whole number from 1 to 1024 (got '0')" "$bin/ompl_parc_validate" --substeps 0 "$tmp/sol.json"
+expect 2 "substeps must be a whole number from 1 to 1024 (got '4294967295')" \
+    "$bin/ompl_parc_validate" --substeps 4294967295 "$tmp/sol.json"
 expect 2 "unknown scenario 'warehouse' (valid: mobile_circle, mobile_cross, panda_cage, planar_cross)" \
     "$bin/ompl_parc_demo" --scenario warehouse
 expect 2 "even number of robots" "$bin/ompl_parc_demo" --robots 5
@@ -51,6 +54,17 @@ expect 2 "time-limit must be positive" "$bin/ompl_parc_demo" --time-limit 0
 expect 2 "unrecognised option\|unrecognized option" "$bin/ompl_parc_demo" --bogus
 expect 2 "robots" "$bin/ompl_parc_demo" --robots many
 expect 0 "Usage: ompl_parc_demo" "$bin/ompl_parc_demo" --help
+# Numbers are read whole and range-checked: no wrapping of negatives, no unbounded limits (issue 15's reproducers).
+expect 2 "robots must be a whole number from 1 to 10000 (got '-2')" "$bin/ompl_parc_demo" --robots -2
+expect 2 "parameter 'workers' must be a number from 1 to 64 (got '-1')" "$bin/ompl_parc_demo" --planner parc --workers -1
+expect 2 "parameter 'workers' must be a number from 1 to 64 (got '1000')" \
+    "$bin/ompl_parc_demo" --planner parc --param workers=1000
+expect 2 "parameter 'window' must be a number from 1 to 2000 (got '-1')" "$bin/ompl_parc_demo" --param window=-1
+expect 2 "time-limit must be a number from 0 to 1e+07 (got 'inf')" "$bin/ompl_parc_demo" --time-limit inf
+expect 2 "time-limit must be a number from 0 to 1e+07 (got '1e10')" "$bin/ompl_parc_demo" --time-limit 1e10
+expect 2 "seed must be a whole number from 0 to 4294967295 (got '4294967296')" "$bin/ompl_parc_demo" --seed 4294967296
+expect 2 "robots must be a whole number from 0 to 1000 (got '-2')" \
+    "$bin/ompl_parc_generate_panda_cage" --out-dir "$tmp" --robots -2
 # A 1 ms limit on a 64-robot composite problem cannot be met: a clean "not solved" exit.
 expect 1 "status     " "$bin/ompl_parc_demo" --scenario mobile_circle --robots 64 --time-limit 0.001
 
