@@ -1,5 +1,7 @@
 #include "BenchmarkConfig.h"
 
+#include "ompl_parc/util/TextFile.h"
+
 #include "ToolSupport.h"
 
 #include <boost/lexical_cast.hpp>
@@ -50,31 +52,40 @@ namespace
     }
 
     /** \brief The number under \e key (or \e fallback if absent); throws unless it parses and is >= \e least. */
+    /** The number \e key of \e section (its \e fallback if absent and one is given) within [\e least, \e most]:
+        whole numbers digits only (no wrapping of "-1"), reals finite. */
     template <typename T>
     T number(const pt::ptree &section, const std::string &name, const std::string &key, std::optional<T> fallback,
-             T least)
+             T least, T most)
     {
         const auto text = section.get_optional<std::string>(key);
         if (!text && fallback)
             return *fallback;
         const std::string value = text ? *text : required(section, name, key);
-        T parsed;
-        // lexical_cast wraps "-1" around for unsigned types: refuse signs there.
-        const bool negative = std::is_unsigned_v<T> && value.find('-') != std::string::npos;
-        if (negative || !boost::conversion::try_lexical_convert(value, parsed))
-            throw std::invalid_argument("[" + name + "] " + key + ": '" + value + "' is not a valid number");
-        if (!(parsed >= least))
-            throw std::invalid_argument("[" + name + "] " + key + " must be at least " + std::to_string(least) +
-                                        ", got " + value);
-        return parsed;
+        const std::string what = "[" + name + "] " + key;
+        if constexpr (std::is_integral_v<T>)
+            return static_cast<T>(ompl_parc::tools::parseInteger(value, what, least, most));
+        else
+            return static_cast<T>(ompl_parc::tools::parseReal(value, what, least, most));
+    }
+
+    /** Names become file names in the output folder: letters, digits, '.', '_' and '-', not starting with '.'. */
+    void checkFileName(const std::string &name, const std::string &what)
+    {
+        const bool plain = !name.empty() && name.front() != '.' &&
+                           std::all_of(name.begin(), name.end(), [](char c)
+                                       { return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' ||
+                                                c == '-'; });
+        if (!plain)
+            throw std::invalid_argument(what + " '" + name +
+                                        "' must be letters, digits, '.', '_' and '-' (not starting with '.'): it "
+                                        "names the files written in the output folder");
     }
 }  // namespace
 
 ompl_parc::tools::BenchmarkConfig ompl_parc::tools::BenchmarkConfig::read(const std::string &path)
 {
-    std::ifstream in(path);
-    if (!in)
-        throw std::invalid_argument("cannot read config file '" + path + "'");
+    std::istringstream in(TextFile::read(path, "BenchmarkConfig"));
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
     return parse(in, folder.empty() ? "." : folder.string());
 }
@@ -106,6 +117,7 @@ ompl_parc::tools::BenchmarkConfig ompl_parc::tools::BenchmarkConfig::parse(std::
     const pt::ptree &problem = tree.get_child("problem");
     checkKeys(problem, "problem", {"name", "scenario", "robots", "resolution", "file"});
     config.problemName_ = required(problem, "problem", "name");
+    checkFileName(config.problemName_, "[problem] name");
     if (problem.count("file") != 0)
     {
         // A scenario file holds the team and the resolution itself.
@@ -120,18 +132,19 @@ ompl_parc::tools::BenchmarkConfig ompl_parc::tools::BenchmarkConfig::parse(std::
     else
     {
         config.scenario_ = required(problem, "problem", "scenario");
-        config.robots_ = number<std::size_t>(problem, "problem", "robots", std::nullopt, 2);
-        config.resolution_ = number<double>(problem, "problem", "resolution", 128., 1e-9);
+        config.robots_ = number<std::size_t>(problem, "problem", "robots", std::nullopt, 2, 10000);
+        config.resolution_ = number<double>(problem, "problem", "resolution", 128., 1e-9, 1e9);
     }
 
     const pt::ptree &benchmark = tree.get_child("benchmark");
     checkKeys(benchmark, "benchmark", {"time_limit", "mem_limit", "run_count", "output", "seed", "workers"});
-    config.timeLimit_ = number<double>(benchmark, "benchmark", "time_limit", std::nullopt, 1e-9);
-    config.memLimit_ = number<double>(benchmark, "benchmark", "mem_limit", std::nullopt, 1.);
-    config.runCount_ = number<unsigned int>(benchmark, "benchmark", "run_count", std::nullopt, 1u);
-    config.seed_ = number<unsigned int>(benchmark, "benchmark", "seed", 1u, 1u);
-    config.workers_ =
-        number<unsigned int>(benchmark, "benchmark", "workers", std::max(1u, std::thread::hardware_concurrency()), 1u);
+    config.timeLimit_ = number<double>(benchmark, "benchmark", "time_limit", std::nullopt, 1e-9, 1e7);
+    config.memLimit_ = number<double>(benchmark, "benchmark", "mem_limit", std::nullopt, 1., 1e9);
+    config.runCount_ = number<unsigned int>(benchmark, "benchmark", "run_count", std::nullopt, 1u, 1000000u);
+    // Run k uses seed + k: the last run's seed must still fit, not wrap round to 0.
+    config.seed_ = number<unsigned int>(benchmark, "benchmark", "seed", 1u, 1u, UINT32_MAX - (config.runCount_ - 1));
+    config.workers_ = number<unsigned int>(benchmark, "benchmark", "workers",
+                                           std::max(1u, std::thread::hardware_concurrency()), 1u, 1024u);
     const std::filesystem::path output = benchmark.get<std::string>("output", "");
     config.output_ =
         output.empty()

@@ -82,11 +82,21 @@ TEST(BenchmarkConfig, BadInputIsOneLineNamingTheValidChoices)
     EXPECT_TRUE(has(reason(PROBLEM + "colour = red\n" + BENCHMARK + planner), "valid: name, scenario"));
     EXPECT_TRUE(has(reason(PROBLEM + BENCHMARK + "save_paths = all\n" + planner), "valid: time_limit"));
     EXPECT_TRUE(has(reason(PROBLEM + "[benchmark]\ntime_limit = 30\nrun_count = 3\n" + planner), "needs mem_limit"));
-    EXPECT_TRUE(has(reason(PROBLEM + BENCHMARK + "workers = two\n" + planner), "not a valid number"));
-    EXPECT_TRUE(has(reason(PROBLEM + BENCHMARK + "workers = -1\n" + planner), "not a valid number"));
-    EXPECT_TRUE(has(reason(PROBLEM + BENCHMARK + "workers = 0\n" + planner), "at least 1"));
-    EXPECT_TRUE(
-        has(reason("[problem]\nname = c\nscenario = mobile_cross\nrobots = 1\n" + BENCHMARK + planner), "at least 2"));
+    const std::string workers = "[benchmark] workers must be a whole number from 1 to 1024";
+    EXPECT_TRUE(has(reason(PROBLEM + BENCHMARK + "workers = two\n" + planner), workers + " (got 'two')"));
+    EXPECT_TRUE(has(reason(PROBLEM + BENCHMARK + "workers = -1\n" + planner), workers + " (got '-1')"));
+    EXPECT_TRUE(has(reason(PROBLEM + BENCHMARK + "workers = 0\n" + planner), workers + " (got '0')"));
+    EXPECT_TRUE(has(reason("[problem]\nname = c\nscenario = mobile_cross\nrobots = 1\n" + BENCHMARK + planner),
+                    "[problem] robots must be a whole number from 2 to 10000 (got '1')"));
+    // The last run's seed (seed + run_count - 1) must fit in 32 bits, not wrap round to 0; limits are finite.
+    EXPECT_TRUE(has(reason(PROBLEM + BENCHMARK + "seed = 4294967295\n" + planner),
+                    "[benchmark] seed must be a whole number from 1 to"));
+    EXPECT_TRUE(has(reason(PROBLEM + "[benchmark]\ntime_limit = inf\nmem_limit = 1\nrun_count = 3\n" + planner),
+                    "[benchmark] time_limit must be a number from"));
+    // Names become file names in the output folder: no way out of it.
+    EXPECT_TRUE(has(reason("[problem]\nname = ../../escaped\nscenario = mobile_cross\nrobots = 4\n" + BENCHMARK +
+                           planner),
+                    "[problem] name '../../escaped' must be letters, digits"));
     EXPECT_TRUE(has(reason(PROBLEM + BENCHMARK + "[planner]\nrrt =\n"), "valid: arc"));
     EXPECT_TRUE(has(reason(PROBLEM + BENCHMARK + "[planner]\n"), "planner"));
     EXPECT_TRUE(has(reason(PROBLEM + BENCHMARK + "[planner]\narc =\nparc.workers = 2\n"), "declared: arc"));

@@ -192,6 +192,47 @@ TEST(ScenarioFile, ErrorsNameTheField)
     EXPECT_THROW(ScenarioFile::read(testing::TempDir() + "/no_such_scenario.json"), ompl::Exception);
 }
 
+TEST(ScenarioFile, HostileNumbersAndFilesAreRefused)
+{
+    auto has = [](const std::string &message, const std::string &part)
+    { return message.find(part) != std::string::npos; };
+    // A version past int's range is not version 1 (it used to wrap to 1).
+    EXPECT_TRUE(has(errorFor([](json &d) { d["version"] = 4294967297ull; }), "unsupported 'version'"));
+    // A number past double's range: one line saying the JSON is not valid, not a bare library exception.
+    auto text = slurp(examplePath("doorway_swap"));
+    text.replace(text.find("\"resolution\""), 0, "\"big\": 1e999, ");
+    try
+    {
+        ScenarioFile::fromJson(text);
+        ADD_FAILURE() << "no error";
+    }
+    catch (const ompl::Exception &e)
+    {
+        EXPECT_TRUE(has(e.what(), "not valid JSON: ")) << e.what();
+    }
+    // A huge quaternion is a rotation like any other: [1e200, 1e200, 0, 0] turns 90 degrees about x.
+    auto doc = json::parse(slurp(examplePath("doorway_swap")));
+    doc["obstacles"].push_back({{"name", "tilted"},
+                                {"shape", "box"},
+                                {"size", {1, 2, 0.5}},
+                                {"position", {6, 6, 0}},
+                                {"orientation", {1e200, 1e200, 0, 0}}});
+    const auto problem = ScenarioFile::fromJson(doc.dump());
+    const auto &tilted = problem.getSpaceInformation()->getRobot(0)->getEnvironment()->getObstacles().back();
+    EXPECT_TRUE(tilted.pose.rotation().isApprox(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix(),
+                                                1e-12));
+    // Not a regular file: refused at once instead of read forever.
+    try
+    {
+        ScenarioFile::read("/dev/zero");
+        ADD_FAILURE() << "no error";
+    }
+    catch (const ompl::Exception &e)
+    {
+        EXPECT_TRUE(has(e.what(), "'/dev/zero' is not a regular file")) << e.what();
+    }
+}
+
 TEST(ScenarioFile, UrdfArmsNameABuiltInModelOrAFileBesideTheScenario)
 {
     // Written Pandas name the built-in model instead of inlining its URDF.

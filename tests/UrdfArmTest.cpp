@@ -172,6 +172,41 @@ TEST(UrdfArm, ClearErrorsNameTheElement)
     expectError(smallArm(), "chain 'lower' .. 'tip' has no movable joint", "lower", "tip");
 }
 
+TEST(UrdfArm, HostileUrdfsAreRefusedWithoutHangingOrOverflowing)
+{
+    // A joint whose parent and child are the same link, on the chain: the walk from the tip used to loop forever.
+    const std::string selfLoop = R"(<robot name="loop">
+  <link name="base"><collision><geometry><sphere radius="0.1"/></geometry></collision></link>
+  <link name="upper"><collision><geometry><sphere radius="0.1"/></geometry></collision></link>
+  <joint name="j1" type="revolute"><parent link="base"/><child link="upper"/><axis xyz="0 1 0"/>
+    <limit lower="-2" upper="2" effort="1" velocity="1"/></joint>
+  <joint name="self" type="fixed"><parent link="upper"/><child link="upper"/></joint>
+</robot>)";
+    expectError(selfLoop, "the URDF's joints form a loop through link 'upper'", "base", "upper");
+    // The same off the chain: a fixed side link that is its own child (the collection recursed without end).
+    expectError(smallArm("revolute", "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>",
+                         "<box size=\"0.1 0.1 0.4\"/>",
+                         "<link name=\"side\"/><joint name=\"branch\" type=\"fixed\"><parent link=\"upper\"/>"
+                         "<child link=\"side\"/></joint><joint name=\"again\" type=\"fixed\"><parent link=\"side\"/>"
+                         "<child link=\"side\"/></joint>"),
+                "the URDF's joints form a loop through link 'side'");
+    // A negative radius is not a smaller shape.
+    expectError(smallArm("revolute", "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>",
+                         "<cylinder radius=\"-0.05\" length=\"0.4\"/>"),
+                "link 'upper' has a collision primitive of non-positive size");
+    // 15 000 fixed links in a row under the tip: a valid URDF, collected without recursion.
+    std::string row;
+    for (int k = 0; k < 15000; ++k)
+        row += "<link name=\"f" + std::to_string(k + 1) + "\"/><joint name=\"g" + std::to_string(k) +
+               "\" type=\"fixed\"><parent link=\"" + (k == 0 ? std::string("tip") : "f" + std::to_string(k)) +
+               "\"/><child link=\"f" + std::to_string(k + 1) + "\"/></joint>";
+    const UrdfArm arm("long", nullptr,
+                      smallArm("revolute", "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>",
+                               "<box size=\"0.1 0.1 0.4\"/>", row),
+                      "base", "tip", Eigen::Isometry3d::Identity());
+    EXPECT_EQ(arm.getDimension(), 2u);
+}
+
 TEST(UrdfArm, ABasePoseThatPutsAFixedLinkIntoAnObstacleNamesBoth)
 {
     // The small arm's base sphere (radius 0.1, never moving) 0.15 from a box's face: fine at 0.15, not at 0.05.

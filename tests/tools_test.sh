@@ -63,6 +63,8 @@ expect 2 "parameter 'window' must be a number from 1 to 2000 (got '-1')" "$bin/o
 expect 2 "time-limit must be a number from 0 to 1e+07 (got 'inf')" "$bin/ompl_parc_demo" --time-limit inf
 expect 2 "time-limit must be a number from 0 to 1e+07 (got '1e10')" "$bin/ompl_parc_demo" --time-limit 1e10
 expect 2 "seed must be a whole number from 0 to 4294967295 (got '4294967296')" "$bin/ompl_parc_demo" --seed 4294967296
+expect 2 "'/dev/zero' is not a regular file" "$bin/ompl_parc_demo" --scenario-file /dev/zero
+expect 2 "'$tmp' is not a regular file" "$bin/ompl_parc_validate" "$tmp"
 expect 2 "robots must be a whole number from 0 to 1000 (got '-2')" \
     "$bin/ompl_parc_generate_panda_cage" --out-dir "$tmp" --robots -2
 # A 1 ms limit on a 64-robot composite problem cannot be met: a clean "not solved" exit.

@@ -4,11 +4,13 @@
 #include "ompl_parc/robots/DiscRobot.h"
 #include "ompl_parc/robots/PlanarArm.h"
 #include "ompl_parc/robots/UrdfArm.h"
+#include "ompl_parc/util/TextFile.h"
 
 #include <nlohmann/json.hpp>
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -136,9 +138,11 @@ namespace
                                                   : std::vector<double>{0., 0., 0.};
         const auto q = value.contains("orientation") ? numbers(value.at("orientation"), where + ".orientation", 4)
                                                      : std::vector<double>{1., 0., 0., 0.};
-        Eigen::Quaterniond rotation(q[0], q[1], q[2], q[3]);
-        if (!(rotation.norm() > 1e-9))
+        // Scaled by its largest component first, so that huge components do not overflow the norm to infinity.
+        const double largest = std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2]), std::abs(q[3])});
+        if (!(largest > 0.))
             fail(where + ".orientation must be a non-zero quaternion [w, x, y, z]");
+        Eigen::Quaterniond rotation(q[0] / largest, q[1] / largest, q[2] / largest, q[3] / largest);
         return Eigen::Translation3d(p[0], p[1], p[2]) * rotation.normalized();
     }
 
@@ -419,12 +423,7 @@ void ompl_parc::ScenarioFile::write(const std::string &path, const MultiRobotPro
 
 ompl_parc::MultiRobotProblem ompl_parc::ScenarioFile::read(const std::string &path)
 {
-    std::ifstream in(path);
-    if (!in)
-        fail("cannot open '" + path + "'");
-    std::stringstream text;
-    text << in.rdbuf();
-    return fromJson(text.str(), std::filesystem::path(path).parent_path().string());
+    return fromJson(TextFile::read(path, "ScenarioFile"), std::filesystem::path(path).parent_path().string());
 }
 
 ompl_parc::MultiRobotProblem ompl_parc::ScenarioFile::fromJson(const std::string &text, const std::string &folder)
@@ -438,13 +437,17 @@ ompl_parc::MultiRobotProblem ompl_parc::ScenarioFile::fromJson(const std::string
     {
         fail("not valid JSON " + syntaxError(e));
     }
+    catch (const json::exception &e)  // e.g. a number beyond double's range (1e999)
+    {
+        fail(std::string("not valid JSON: ") + e.what());
+    }
     requireObject(doc, "the scenario");
     allowOnly(doc, {"format", "version", "name", "resolution", "obstacles", "robots"}, "scenario");
     const json &format = field(doc, "format", "scenario");
     if (!format.is_string() || format.get<std::string>() != FORMAT)
         fail("'format' must be \"" + std::string(FORMAT) + "\"");
     const json &version = field(doc, "version", "scenario");
-    if (!version.is_number_integer() || version.get<int>() != VERSION)
+    if (!version.is_number_integer() || version.get<std::int64_t>() != VERSION)
         fail("unsupported 'version' (this build reads version " + std::to_string(VERSION) + ")");
     const std::string name = nonEmptyString(field(doc, "name", "scenario"), "name");
     const double resolution =

@@ -1,8 +1,11 @@
 #include "ompl_parc/io/SolutionFile.h"
 
+#include "ompl_parc/util/TextFile.h"
+
 #include <nlohmann/json.hpp>
 #include <ompl/util/Exception.h>
 
+#include <cstdint>
 #include <fstream>
 #include <sstream>
 
@@ -142,12 +145,7 @@ void ompl_parc::SolutionFile::write(const std::string &path, const MultiRobotPla
 
 ompl_parc::MultiRobotPlan ompl_parc::SolutionFile::read(const std::string &path, const MultiRobotSpaceInformation &si)
 {
-    std::ifstream in(path);
-    if (!in)
-        fail("cannot open '" + path + "'");
-    std::stringstream text;
-    text << in.rdbuf();
-    return fromJson(text.str(), si);
+    return fromJson(TextFile::read(path, "SolutionFile"), si);
 }
 
 ompl_parc::MultiRobotPlan ompl_parc::SolutionFile::fromJson(const std::string &text,
@@ -158,7 +156,7 @@ ompl_parc::MultiRobotPlan ompl_parc::SolutionFile::fromJson(const std::string &t
     {
         doc = json::parse(text);
     }
-    catch (const json::parse_error &e)
+    catch (const json::exception &e)  // syntax, or a number beyond double's range (1e999)
     {
         fail(std::string("not valid JSON: ") + e.what());
     }
@@ -166,7 +164,7 @@ ompl_parc::MultiRobotPlan ompl_parc::SolutionFile::fromJson(const std::string &t
     if (!format.is_string() || format.get<std::string>() != FORMAT)
         fail("'format' must be \"" + std::string(FORMAT) + "\"");
     const json &version = field(doc, "version", "solution");
-    if (!version.is_number_integer() || version.get<int>() < 1 || version.get<int>() > VERSION)
+    if (!version.is_number_integer() || version.get<std::int64_t>() < 1 || version.get<std::int64_t>() > VERSION)
         fail("unsupported 'version' (this build reads versions 1 to " + std::to_string(VERSION) + ")");
     const json &resolution = field(doc, "resolution", "solution");
     if (!resolution.is_number() || !(resolution.get<double>() > 0.))

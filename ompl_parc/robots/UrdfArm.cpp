@@ -1,5 +1,7 @@
 #include "ompl_parc/robots/UrdfArm.h"
 
+#include "ompl_parc/util/TextFile.h"
+
 #include "ompl_parc/collision/CapsuleCollision.h"
 
 #include <console_bridge/console.h>
@@ -10,9 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <mutex>
-#include <sstream>
+#include <set>
 
 namespace
 {
@@ -104,28 +105,44 @@ namespace
                                                    "' has mesh collision geometry; only box, cylinder and sphere "
                                                    "are supported");
         }
-        if (!(shape.size.maxCoeff() > 0.) || (shape.shape == Shape::BOX && !(shape.size.minCoeff() > 0.)) ||
-            (shape.shape == Shape::CYLINDER && !(shape.size.z() > 0.)))
+        // Every dimension a shape uses must be positive and finite (a negative radius is not a smaller shape).
+        const bool sized = shape.shape == Shape::BOX      ? shape.size.allFinite() && shape.size.minCoeff() > 0. :
+                           shape.shape == Shape::CYLINDER ? std::isfinite(shape.size.x()) && shape.size.x() > 0. &&
+                                                                std::isfinite(shape.size.z()) && shape.size.z() > 0. :
+                                                            std::isfinite(shape.size.x()) && shape.size.x() > 0.;
+        if (!sized)
             throw ompl::Exception(CONTEXT, "link '" + link.name + "' has a collision primitive of non-positive size");
         return {frame, shape};
     }
 
-    /** Primitives of \e link and of the links hanging off it by fixed joints (not \e onChain ones). */
-    void collectPrimitives(const urdf::ModelInterface &model, const urdf::Link &link, std::size_t frame,
-                           const Eigen::Isometry3d &linkPose, const std::vector<const urdf::Joint *> &onChain,
-                           std::vector<ompl_parc::UrdfArm::Primitive> &out)
+    /** Primitives of \e root and of the links hanging off it by fixed joints (not \e onChain ones). Iterative
+        (a chain of thousands of fixed links must not overflow the stack), and each link is visited once: a URDF
+        whose joints lead back to a link already visited is refused. */
+    void collectPrimitives(const urdf::ModelInterface &model, const urdf::Link &root, std::size_t frame,
+                           const Eigen::Isometry3d &rootPose, const std::vector<const urdf::Joint *> &onChain,
+                           std::set<const urdf::Link *> &visited, std::vector<ompl_parc::UrdfArm::Primitive> &out)
     {
-        for (const auto &collision : link.collision_array)
-            out.push_back(toPrimitive(link, *collision, frame, linkPose));
-        for (const auto &joint : link.child_joints)
+        std::vector<std::pair<const urdf::Link *, Eigen::Isometry3d>> pending = {{&root, rootPose}};
+        while (!pending.empty())
         {
-            if (std::find(onChain.begin(), onChain.end(), joint.get()) != onChain.end())
-                continue;
-            if (joint->type != urdf::Joint::FIXED)
-                throw ompl::Exception(CONTEXT, "non-serial chain: movable joint '" + joint->name +
-                                                   "' branches off link '" + link.name + "'");
-            collectPrimitives(model, *model.getLink(joint->child_link_name), frame,
-                              linkPose * toIsometry(joint->parent_to_joint_origin_transform), onChain, out);
+            const auto [link, linkPose] = pending.back();
+            pending.pop_back();
+            if (!visited.insert(link).second)
+                throw ompl::Exception(CONTEXT, "the URDF's joints form a loop through link '" + link->name + "'");
+            for (const auto &collision : link->collision_array)
+                out.push_back(toPrimitive(*link, *collision, frame, linkPose));
+            for (const auto &joint : link->child_joints)
+            {
+                if (std::find(onChain.begin(), onChain.end(), joint.get()) != onChain.end())
+                    continue;
+                if (joint->type != urdf::Joint::FIXED)
+                    throw ompl::Exception(CONTEXT, "non-serial chain: movable joint '" + joint->name +
+                                                       "' branches off link '" + link->name + "'");
+                const auto child = model.getLink(joint->child_link_name);
+                if (!child)
+                    throw ompl::Exception(CONTEXT, "joint '" + joint->name + "' has no child link");
+                pending.emplace_back(child.get(), linkPose * toIsometry(joint->parent_to_joint_origin_transform));
+            }
         }
     }
 }  // namespace
@@ -157,10 +174,13 @@ ompl_parc::UrdfArm::Chain ompl_parc::UrdfArm::parseChain(const std::string &urdf
 
     // Joints from the tip up to the base, then reversed.
     std::vector<const urdf::Joint *> joints;
+    std::set<const urdf::Link *> onPath;
     for (auto link = tip; link != base; link = link->getParent())
     {
         if (!link->getParent())
             throw ompl::Exception(CONTEXT, "tip link '" + tipLink + "' is not below base link '" + baseLink + "'");
+        if (!onPath.insert(link.get()).second)  // e.g. a joint whose parent and child are the same link
+            throw ompl::Exception(CONTEXT, "the URDF's joints form a loop through link '" + link->name + "'");
         joints.push_back(link->parent_joint.get());
     }
     std::reverse(joints.begin(), joints.end());
@@ -214,8 +234,10 @@ ompl_parc::UrdfArm::Chain ompl_parc::UrdfArm::parseChain(const std::string &urdf
     std::vector<const urdf::Link *> links = {base.get()};
     for (const urdf::Joint *joint : joints)
         links.push_back(model->getLink(joint->child_link_name).get());
+    std::set<const urdf::Link *> visited;
     for (std::size_t k = 0; k < links.size(); ++k)
-        collectPrimitives(*model, *links[k], linkPoses[k].first, linkPoses[k].second, joints, chain.primitives);
+        collectPrimitives(*model, *links[k], linkPoses[k].first, linkPoses[k].second, joints, visited,
+                          chain.primitives);
     if (chain.primitives.empty())
         throw ompl::Exception(CONTEXT, "chain '" + baseLink + "' .. '" + tipLink + "' has no collision geometry");
     return chain;
@@ -304,12 +326,7 @@ bool ompl_parc::UrdfArm::allValid(const double *configs, std::size_t count) cons
 
 std::string ompl_parc::UrdfArm::readFile(const std::string &path)
 {
-    std::ifstream in(path);
-    if (!in)
-        throw ompl::Exception(CONTEXT, "cannot read URDF file '" + path + "'");
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
+    return TextFile::read(path, CONTEXT);
 }
 
 Eigen::Isometry3d ompl_parc::UrdfArm::pose(double x, double y, double z, double roll, double pitch, double yaw)
