@@ -72,10 +72,11 @@ namespace
     /** Names become file names in the output folder: letters, digits, '.', '_' and '-', not starting with '.'. */
     void checkFileName(const std::string &name, const std::string &what)
     {
-        const bool plain = !name.empty() && name.front() != '.' &&
-                           std::all_of(name.begin(), name.end(), [](char c)
-                                       { return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' ||
-                                                c == '-'; });
+        const bool plain =
+            !name.empty() && name.front() != '.' &&
+            std::all_of(name.begin(), name.end(),
+                        [](char c)
+                        { return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-'; });
         if (!plain)
             throw std::invalid_argument(what + " '" + name +
                                         "' must be letters, digits, '.', '_' and '-' (not starting with '.'): it "

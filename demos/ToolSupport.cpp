@@ -45,8 +45,8 @@ ompl_parc::MultiRobotProblem ompl_parc::tools::problemFromOptions(const po::vari
         return ScenarioFile::read(vm["scenario-file"].as<std::string>());  // checks the endpoints itself
     }
     MultiRobotProblem problem = scenarios::createScenario(
-        vm["scenario"].as<std::string>(), parseInteger(vm["robots"].as<std::string>(), "--robots", 1, MAX_ROBOTS),
-        128., parseInteger(vm["task"].as<std::string>(), "--task", 0, MAX_TASK));
+        vm["scenario"].as<std::string>(), parseInteger(vm["robots"].as<std::string>(), "--robots", 1, MAX_ROBOTS), 128.,
+        parseInteger(vm["task"].as<std::string>(), "--task", 0, MAX_TASK));
     const std::string reason = problem.checkEndpoints();
     if (!reason.empty())
         throw std::invalid_argument(reason);
@@ -114,8 +114,8 @@ void ompl_parc::tools::addProblemOptions(po::options_description &options)
 {
     const std::string names = join(scenarios::scenarioNames());
     options.add_options()("scenario", po::value<std::string>()->default_value("mobile_cross"),
-                          ("built-in scenario: " + names).c_str())("robots", po::value<std::string>()->default_value("4"),
-                                                                   "number of robots of the built-in scenario")(
+                          ("built-in scenario: " + names).c_str())(
+        "robots", po::value<std::string>()->default_value("4"), "number of robots of the built-in scenario")(
         "task", po::value<std::string>()->default_value("0"), "task of the built-in scenario (panda_cage: 0 to 4)")(
         "scenario-file", po::value<std::string>(), "read the problem from this scenario file (JSON) instead");
 }

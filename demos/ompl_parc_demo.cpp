@@ -112,8 +112,8 @@ int main(int argc, char **argv)
             const double timeLimit = tools::parseReal(vm["time-limit"].as<std::string>(), "--time-limit", 0., 1e7);
             if (!(timeLimit > 0.))
                 throw std::invalid_argument("--time-limit must be positive");
-            ompl::RNG::setSeed(static_cast<std::uint32_t>(
-                tools::parseInteger(vm["seed"].as<std::string>(), "--seed", 0, UINT32_MAX)));
+            ompl::RNG::setSeed(
+                static_cast<std::uint32_t>(tools::parseInteger(vm["seed"].as<std::string>(), "--seed", 0, UINT32_MAX)));
 
             const MultiRobotProblem problem = tools::problemFromOptions(vm);
             const auto &si = problem.getSpaceInformation();

@@ -67,8 +67,7 @@ int main(int argc, char **argv)
                     const std::string path = vm["out-dir"].as<std::string>() + "/" + problem.getName() + ".json";
                     ScenarioFile::write(path, problem);
                     std::cout << path << "  generated in " << std::fixed << std::setprecision(1) << seconds
-                              << " s, conflicting pairs "
-                              << scenarios::countConflictingPairs(problem, seed) << " of "
+                              << " s, conflicting pairs " << scenarios::countConflictingPairs(problem, seed) << " of "
                               << robots * (robots - 1) / 2 << std::endl;
                 }
             return static_cast<int>(tools::EXIT_SOLVED);

@@ -94,9 +94,9 @@ TEST(BenchmarkConfig, BadInputIsOneLineNamingTheValidChoices)
     EXPECT_TRUE(has(reason(PROBLEM + "[benchmark]\ntime_limit = inf\nmem_limit = 1\nrun_count = 3\n" + planner),
                     "[benchmark] time_limit must be a number from"));
     // Names become file names in the output folder: no way out of it.
-    EXPECT_TRUE(has(reason("[problem]\nname = ../../escaped\nscenario = mobile_cross\nrobots = 4\n" + BENCHMARK +
-                           planner),
-                    "[problem] name '../../escaped' must be letters, digits"));
+    EXPECT_TRUE(
+        has(reason("[problem]\nname = ../../escaped\nscenario = mobile_cross\nrobots = 4\n" + BENCHMARK + planner),
+            "[problem] name '../../escaped' must be letters, digits"));
     EXPECT_TRUE(has(reason(PROBLEM + BENCHMARK + "[planner]\nrrt =\n"), "valid: arc"));
     EXPECT_TRUE(has(reason(PROBLEM + BENCHMARK + "[planner]\n"), "planner"));
     EXPECT_TRUE(has(reason(PROBLEM + BENCHMARK + "[planner]\narc =\nparc.workers = 2\n"), "declared: arc"));

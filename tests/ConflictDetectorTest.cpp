@@ -314,8 +314,9 @@ namespace
         for (std::size_t r = 0; r < si.getRobotCount(); ++r)
         {
             const bool disc = si.getRobot(r)->getKind() == "disc";
-            const auto draw = [&] { return disc ? std::vector<double>{where(rng), where(rng)}
-                                                : std::vector<double>{angle(rng), angle(rng)}; };
+            const auto draw = [&] {
+                return disc ? std::vector<double>{where(rng), where(rng)} : std::vector<double>{angle(rng), angle(rng)};
+            };
             std::vector<double> q = draw();
             TimedPath path(2, q.data());
             for (std::size_t k = pieces(rng); k > 0; --k)

@@ -219,8 +219,8 @@ TEST(ScenarioFile, HostileNumbersAndFilesAreRefused)
                                 {"orientation", {1e200, 1e200, 0, 0}}});
     const auto problem = ScenarioFile::fromJson(doc.dump());
     const auto &tilted = problem.getSpaceInformation()->getRobot(0)->getEnvironment()->getObstacles().back();
-    EXPECT_TRUE(tilted.pose.rotation().isApprox(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix(),
-                                                1e-12));
+    EXPECT_TRUE(tilted.pose.rotation().isApprox(
+        Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix(), 1e-12));
     // Not a regular file: refused at once instead of read forever.
     try
     {

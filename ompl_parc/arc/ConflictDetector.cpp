@@ -147,8 +147,8 @@ std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRo
         {
             // Two discs: straight to the pair's first conflict or its end, from the pieces (however far past
             // \e to: the frontier stops at the conflict, which a later window reports).
-            const auto contact =
-                DiscPairScan(*discs_[i], plan.getPath(i), *discs_[j], plan.getPath(j), discA, discB).firstContact(f, last);
+            const auto contact = DiscPairScan(*discs_[i], plan.getPath(i), *discs_[j], plan.getPath(j), discA, discB)
+                                     .firstContact(f, last);
             frontier_[p] = contact ? *contact : last + 1;
             knownConflict_[p] = contact.has_value();
             if (contact && *contact < to)

@@ -85,7 +85,8 @@ namespace ompl_parc
         /** \brief True if pair \e pair (as by pairIndex()) is known conflict-free to its end in \e plan. */
         bool isSettled(const MultiRobotPlan &plan, std::size_t pair) const
         {
-            return frontier_[pair] > std::max(plan.getArrival(pairs_[pair].first), plan.getArrival(pairs_[pair].second));
+            return frontier_[pair] >
+                   std::max(plan.getArrival(pairs_[pair].first), plan.getArrival(pairs_[pair].second));
         }
 
         std::size_t getRobotCount() const { return robots_; }

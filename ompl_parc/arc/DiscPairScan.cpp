@@ -16,12 +16,12 @@ namespace
 
 ompl_parc::DiscPairScan::DiscPairScan(const DiscRobot &a, const TimedPath &pathA, const DiscRobot &b,
                                       const TimedPath &pathB, CollisionBody &bodyA, CollisionBody &bodyB)
-  : a_(a), b_(b), pathA_(pathA), pathB_(pathB), bodyA_(bodyA), bodyB_(bodyB), cursorA_(pathA), cursorB_(pathB)
+    : a_(a), b_(b), pathA_(pathA), pathB_(pathB), bodyA_(bodyA), bodyB_(bodyB), cursorA_(pathA), cursorB_(pathB)
 {
 }
 
 ompl_parc::DiscPairScan::Motion ompl_parc::DiscPairScan::motionAt(const TimedPath &path, std::size_t &piece,
-                                                                   std::size_t t)
+                                                                  std::size_t t)
 {
     constexpr std::size_t FOREVER = std::numeric_limits<std::size_t>::max();
     double q[2];
@@ -45,8 +45,8 @@ ompl_parc::DiscPairScan::Motion ompl_parc::DiscPairScan::motionAt(const TimedPat
     const double steps = static_cast<double>(p.steps);
     // The linear part ends where the local step reaches the piece's steps (its value there is `to`, which the
     // line reaches up to rounding).
-    return {q[0], q[1], (to[0] - from[0]) / steps, (to[1] - from[1]) / steps, t,
-            std::min(coverEnd, t + (p.steps - local))};
+    return {
+        q[0], q[1], (to[0] - from[0]) / steps, (to[1] - from[1]) / steps, t, std::min(coverEnd, t + (p.steps - local))};
 }
 
 bool ompl_parc::DiscPairScan::collidesAt(std::size_t t)
@@ -80,9 +80,9 @@ std::optional<std::size_t> ompl_parc::DiscPairScan::firstContact(std::size_t fro
         const double speed2 = dvx * dvx + dvy * dvy, along = dx * dvx + dy * dvy;
         const double u = speed2 > 0. ? std::clamp(-along / speed2, 0., length) : 0.;
         const double ex = dx + dvx * u, ey = dy + dvy * u, closest2 = ex * ex + ey * ey;
-        const double scale = 1. + std::max({std::abs(ma.x), std::abs(ma.y), std::abs(mb.x), std::abs(mb.y)}) +
-                             (std::abs(ma.vx) + std::abs(ma.vy) + std::abs(mb.vx) + std::abs(mb.vy)) *
-                                 (length + sa + sb);
+        const double scale =
+            1. + std::max({std::abs(ma.x), std::abs(ma.y), std::abs(mb.x), std::abs(mb.y)}) +
+            (std::abs(ma.vx) + std::abs(ma.vy) + std::abs(mb.vx) + std::abs(mb.vy)) * (length + sa + sb);
         const double reach = radiusSum + RELATIVE_MARGIN * scale;
         if (!(closest2 >= reach * reach))  // (NaN included) the discs may touch around u*: check exactly there
         {

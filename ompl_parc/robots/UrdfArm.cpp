@@ -106,10 +106,12 @@ namespace
                                                    "are supported");
         }
         // Every dimension a shape uses must be positive and finite (a negative radius is not a smaller shape).
-        const bool sized = shape.shape == Shape::BOX      ? shape.size.allFinite() && shape.size.minCoeff() > 0. :
-                           shape.shape == Shape::CYLINDER ? std::isfinite(shape.size.x()) && shape.size.x() > 0. &&
-                                                                std::isfinite(shape.size.z()) && shape.size.z() > 0. :
-                                                            std::isfinite(shape.size.x()) && shape.size.x() > 0.;
+        const auto positive = [](double v) { return std::isfinite(v) && v > 0.; };
+        bool sized = positive(shape.size.x());  // a sphere's radius, a cylinder's radius, a box's x size
+        if (shape.shape == Shape::BOX)
+            sized = sized && positive(shape.size.y()) && positive(shape.size.z());
+        else if (shape.shape == Shape::CYLINDER)
+            sized = sized && positive(shape.size.z());
         if (!sized)
             throw ompl::Exception(CONTEXT, "link '" + link.name + "' has a collision primitive of non-positive size");
         return {frame, shape};
