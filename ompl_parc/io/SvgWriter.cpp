@@ -249,8 +249,10 @@ namespace
         void drawBody(const ompl_parc::CollisionBody &body, const std::string &colour, bool outline,
                       const std::string &attributes, const Frames *frames, std::ostream &out) const
         {
-            for (const auto &[first, last] : chains(body))
+            for (const auto &chain : chains(body))
             {
+                // Plain variables, not a structured binding: C++17 lambdas (below) cannot capture those.
+                const std::size_t first = chain.first, last = chain.second;
                 if (last == first + 1 && isDot(body, first))
                 {
                     out << "<circle cx=\"" << num(body.ax_[first]) << "\" cy=\"" << num(body.ay_[first]) << "\" r=\""
