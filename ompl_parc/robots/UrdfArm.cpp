@@ -69,6 +69,23 @@ namespace
         return t;
     }
 
+    /** urdfdom's links own their child links (shared_ptr): the joints of a URDF that loop (refused below) make a
+        cycle of owners that would never be freed. Clears every link's children when the parse is done with the
+        model, normally or by an exception. */
+    struct UnlinkedOnExit
+    {
+        const urdf::ModelInterfaceSharedPtr &model;
+        ~UnlinkedOnExit()
+        {
+            if (model)
+                for (auto &entry : model->links_)
+                {
+                    entry.second->child_links.clear();
+                    entry.second->child_joints.clear();
+                }
+        }
+    };
+
     /** The primitive of one <collision> element of \e link, placed by \e linkPose in chain frame \e frame. */
     ompl_parc::UrdfArm::Primitive toPrimitive(const urdf::Link &link, const urdf::Collision &collision,
                                               std::size_t frame, const Eigen::Isometry3d &linkPose)
@@ -153,6 +170,7 @@ ompl_parc::UrdfArm::Chain ompl_parc::UrdfArm::parseChain(const std::string &urdf
                                                          const std::string &tipLink)
 {
     urdf::ModelInterfaceSharedPtr model;
+    const UnlinkedOnExit unlink{model};
     {
         UrdfdomErrors errors;
         try
