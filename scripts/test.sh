@@ -2,7 +2,7 @@
 # One command from a fresh clone: install dependencies, build, run the whole test suite, then build
 # and run it again under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/), and the tests of the
 # parallel code (P-ARC, the OR race, the worker pool, the threaded validator) under ThreadSanitizer (build-tsan/),
-# then fuzzes the scenario, solution and benchmark-config parsers for a minute (scripts/fuzz.sh, build-fuzz/).
+# then fuzzes the scenario, solution and benchmark-config parsers (200 000 inputs, fixed seed: scripts/fuzz.sh).
 # OMPL_PARC_SKIP_SANITIZERS=1 skips the sanitizer pass (for quick local iterations only; CI runs it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -19,6 +19,6 @@ if [ "${OMPL_PARC_SKIP_SANITIZERS:-0}" != "1" ]; then
         -DOMPL_PARC_BUILD_BENCHMARKS=OFF
     TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$PWD/tests/tsan.supp" ctest --test-dir build-tsan --output-on-failure \
         -j"$(nproc)" -R 'Parc|BatchDetection|WorkerPool|OrTaskRunner|SolutionValidator|ConflictDetector.Concurrent'
-    echo "== fuzzing the file parsers: libFuzzer, 60 s (build-fuzz/) =="
-    bash scripts/fuzz.sh 60
+    echo "== fuzzing the file parsers: libFuzzer, 200 000 inputs from a fixed seed (build-fuzz/) =="
+    bash scripts/fuzz.sh 200000 1
 fi
