@@ -20,7 +20,7 @@ ompl_parc::DiscPairScan::DiscPairScan(const DiscRobot &a, const TimedPath &pathA
 {
 }
 
-ompl_parc::DiscPairScan::Motion ompl_parc::DiscPairScan::motionAt(const TimedPath &path, std::size_t &piece,
+ompl_parc::DiscPairScan::Motion ompl_parc::DiscPairScan::motionAt(const TimedPath &path, TimedPath::Cursor &cursor,
                                                                   std::size_t t)
 {
     constexpr std::size_t FOREVER = std::numeric_limits<std::size_t>::max();
@@ -31,10 +31,7 @@ ompl_parc::DiscPairScan::Motion ompl_parc::DiscPairScan::motionAt(const TimedPat
         path.getConfig(arrival, q);
         return {q[0], q[1], 0., 0., t, FOREVER};
     }
-    if (piece >= path.getPieceCount())
-        piece = path.locate(t);
-    while (piece + 1 < path.getPieceCount() && path.getPiece(piece + 1).start <= t)
-        ++piece;
+    const std::size_t piece = cursor.seek(t);
     const TimedPath::Piece &p = path.getPiece(piece);
     const std::size_t coverEnd = piece + 1 < path.getPieceCount() ? path.getPiece(piece + 1).start - 1 : arrival;
     const std::size_t local = p.offset + (t - p.start);
@@ -62,15 +59,14 @@ bool ompl_parc::DiscPairScan::collidesAt(std::size_t t)
 std::optional<std::size_t> ompl_parc::DiscPairScan::firstContact(std::size_t from, std::size_t last)
 {
     const double radiusSum = a_.getRadius() + b_.getRadius();
-    std::size_t pieceA = std::numeric_limits<std::size_t>::max(), pieceB = pieceA;
     Motion ma{}, mb{};
     for (std::size_t t = from; t <= last;)
     {
         // A motion is renewed only when it ends: the other one carries on across the stretches it spans.
         if (t == from || t > ma.end)
-            ma = motionAt(pathA_, pieceA, t);
+            ma = motionAt(pathA_, cursorA_, t);
         if (t == from || t > mb.end)
-            mb = motionAt(pathB_, pieceB, t);
+            mb = motionAt(pathB_, cursorB_, t);
         const std::size_t end = std::min({ma.end, mb.end, last});
         const double length = static_cast<double>(end - t);
         // Relative position d(u) = d0 + dv u at timestep t + u, u in [0, length]; closest approach at u*.

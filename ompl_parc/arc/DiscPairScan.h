@@ -37,9 +37,8 @@ namespace ompl_parc
             double x, y, vx, vy;
             std::size_t time, end;
         };
-        /** \brief The motion of \e path from timestep \e t on; \e piece is the piece covering the previous
-            call's timestep (t only grows), or npos before the first call. */
-        static Motion motionAt(const TimedPath &path, std::size_t &piece, std::size_t t);
+        /** \brief The motion of \e path from timestep \e t on, found by \e cursor (on \e path; t only grows). */
+        static Motion motionAt(const TimedPath &path, TimedPath::Cursor &cursor, std::size_t t);
 
         /** \brief The exact per-timestep test. */
         bool collidesAt(std::size_t t);
@@ -47,6 +46,7 @@ namespace ompl_parc
         const DiscRobot &a_, &b_;
         const TimedPath &pathA_, &pathB_;
         CollisionBody &bodyA_, &bodyB_;
+        /** \brief One reader per path, for the motions and the exact checks alike: both only move forward. */
         TimedPath::Cursor cursorA_, cursorB_;
     };
 }  // namespace ompl_parc

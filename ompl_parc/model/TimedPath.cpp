@@ -84,13 +84,19 @@ void ompl_parc::TimedPath::getConfig(std::size_t t, double *out) const
 
 void ompl_parc::TimedPath::Cursor::get(std::size_t t, double *out)
 {
+    t = std::min(t, path_->getArrival());
+    path_->evaluate(seek(t), t, out);
+}
+
+std::size_t ompl_parc::TimedPath::Cursor::seek(std::size_t t)
+{
     const auto &pieces = path_->pieces_;
     t = std::min(t, path_->getArrival());
     if (piece_ >= pieces.size() || pieces[piece_].start > t)
         piece_ = path_->locate(t);
     while (piece_ + 1 < pieces.size() && pieces[piece_ + 1].start <= t)
         ++piece_;
-    path_->evaluate(piece_, t, out);
+    return piece_;
 }
 
 std::vector<double> ompl_parc::TimedPath::toDense() const

@@ -107,6 +107,8 @@ namespace ompl_parc
             Cursor() = default;
             explicit Cursor(const TimedPath &path) : path_(&path) {}
             void get(std::size_t t, double *out);
+            /** \brief Index of the piece covering timestep \e t (the last piece from the arrival on). */
+            std::size_t seek(std::size_t t);
 
           private:
             const TimedPath *path_{nullptr};
