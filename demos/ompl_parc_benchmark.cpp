@@ -47,6 +47,7 @@ namespace
             {"initial_time", "initial_wall_time REAL"},
             {"detection_time", "detection_wall_time REAL"},
             {"resolution_time", "resolution_wall_time REAL"},
+            {"longest_call", "longest_solver_call REAL"},
             {"projected_time", "projected_total_time REAL"},
             {"batches", "batches INTEGER"},
             {"first_batch_size", "first_batch_size INTEGER"},

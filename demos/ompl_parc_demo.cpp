@@ -70,7 +70,7 @@ namespace
                   << " s (wall; other: reading the problem, building the solution path)\n"
                   << "conflicts  " << s->conflicts << " resolved, " << s->solverCalls << " solver calls, "
                   << s->expansions << " window expansions, " << s->teamGrowths << " robot-set growths, "
-                  << s->globalRepairs << " global repairs\n";
+                  << s->globalRepairs << " global repairs, longest solver call " << s->longestSolverCall << " s\n";
         if (parallel != nullptr)
             std::cout << "parallel   " << parallel->batches << " batches, " << parallel->repairAttempts
                       << " repair attempts (" << parallel->cancelledAttempts << " cancelled)\n";

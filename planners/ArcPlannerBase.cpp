@@ -24,6 +24,8 @@ namespace
                 return {composite};
             case ompl_parc::ArcSettings::Solvers::PRIORITIZED:
                 return {prioritized};
+            case ompl_parc::ArcSettings::Solvers::COMPOSITE_FIRST:
+                return {composite, prioritized};
             case ompl_parc::ArcSettings::Solvers::HIERARCHY:
                 break;
         }
@@ -53,7 +55,7 @@ ompl_parc::ArcPlannerBase::ArcPlannerBase(const ob::SpaceInformationPtr &si, con
     declareParam<unsigned int>("sample_cap", this, &ArcPlannerBase::setSampleCap, &ArcPlannerBase::getSampleCap,
                                "0:1000:100000");
     declareParam<std::string>("solvers", this, &ArcPlannerBase::setSolvers, &ArcPlannerBase::getSolvers,
-                              "hierarchy,composite,prioritized");
+                              "hierarchy,composite,prioritized,composite-first");
     declareParam<bool>("simplify_initial", this, &ArcPlannerBase::setSimplifyInitial,
                        &ArcPlannerBase::getSimplifyInitial, "0,1");
     declareParam<unsigned int>("seed", this, &ArcPlannerBase::setSeed, &ArcPlannerBase::getSeed);
@@ -264,6 +266,7 @@ void ompl_parc::ArcPlannerBase::getPlannerData(ob::PlannerData &data) const
     p["expansions INTEGER"] = std::to_string(s.expansions);
     p["team_growths INTEGER"] = std::to_string(s.teamGrowths);
     p["global_repairs INTEGER"] = std::to_string(s.globalRepairs);
+    p["longest_solver_call REAL"] = std::to_string(s.longestSolverCall);
     // Property names become SQL column names in ompl_benchmark_statistics: no '-' (solver names have them).
     for (const auto &[solver, wins] : s.solverWins)
     {

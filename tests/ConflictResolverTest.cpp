@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <mutex>
+#include <thread>
 
 using namespace ompl_parc;
 namespace ob = ompl::base;
@@ -103,11 +105,92 @@ TEST_F(HeadOn, FailedWindowsGrowUntilTheGlobalProblem)
     EXPECT_EQ(asked[2].windowStart, 580u);
     const auto &last = asked.back();
     EXPECT_TRUE(last.bounds.empty());
-    EXPECT_EQ(last.sampleCap, 0u);
     EXPECT_EQ(last.windowStart, 0u);
     EXPECT_EQ(last.windowEnd, 2560u);
     EXPECT_EQ(last.starts[0], problem.getStart(0));
     EXPECT_EQ(last.goals[1], problem.getGoal(1));
+    // The global problem is retried with twice the effort each round: no call is ever uncapped.
+    std::vector<unsigned int> globalCaps;
+    for (const auto &s : asked)
+        if (s.bounds.empty())
+            globalCaps.push_back(s.sampleCap);
+    EXPECT_EQ(globalCaps, (std::vector<unsigned int>{settings.sampleCap, 2 * settings.sampleCap,
+                                                     4 * settings.sampleCap}));
+}
+
+namespace
+{
+    /** A solver that never succeeds and only returns when its termination condition fires. */
+    class SpinningSolver : public SubproblemSolver
+    {
+      public:
+        std::string getName() const override { return "spinning"; }
+        bool solve(const MultiRobotSpaceInformation &, const Subproblem &, const ob::PlannerTerminationCondition &ptc,
+                   std::uint_fast32_t, Patch &) const override
+        {
+            while (!ptc)
+                std::this_thread::sleep_for(std::chrono::microseconds(100));
+            return false;
+        }
+    };
+}  // namespace
+
+TEST_F(HeadOn, NoSolverCallHoldsTheBudget)
+{
+    // Sample caps bind on iterations; a call whose iterations are slow is stopped by its time cap: at most as
+    // long as the solve had run before it (at least MIN_CALL_SECONDS). Slack for a loaded machine.
+    ConflictResolver resolver(*problem.getSpaceInformation(), ArcSettings(), {std::make_shared<SpinningSolver>()});
+    const auto start = ompl::time::now();
+    ResolveTrace trace;
+    EXPECT_FALSE(resolver.resolve(plan, {0, 1}, 1280, ob::timedPlannerTerminationCondition(2.), 1, &trace));
+    const double elapsed = ompl::time::seconds(ompl::time::now() - start);
+    EXPECT_GE(trace.calls, 3u);
+    EXPECT_LE(trace.longestCall, std::max(ConflictResolver::MIN_CALL_SECONDS, 0.5 * elapsed) + 0.25);
+}
+
+namespace
+{
+    /** A RecordingSolver that asks for the subproblem's context. */
+    class ContextSolver : public RecordingSolver
+    {
+      public:
+        bool usesContext() const override { return true; }
+    };
+}  // namespace
+
+TEST(ConflictResolverContext, RobotsNearTheWindowAreTheContext)
+{
+    // Mobile Circle 4 with straight lines: all four discs cross the centre at the same time.
+    const MultiRobotProblem problem = scenarios::createMobileCircle(4);
+    const auto &si = *problem.getSpaceInformation();
+    MultiRobotPlan plan(si);
+    for (std::size_t r = 0; r < 4; ++r)
+        plan.setRobotPath(r, test::straightLine(problem.getStart(r), problem.getGoal(r), 128.));
+    ArcSettings settings;
+    settings.window = 200;
+    const std::size_t t = plan.getArrival(0) / 2 - 100;  // before the discs touch: both window ends are clear
+    const auto sub = ConflictResolver(si, settings, {std::make_shared<ContextSolver>()}).makeSubproblem(plan, {0, 2}, t, 0);
+    ASSERT_EQ(sub.others, (std::vector<std::size_t>{1, 3}));
+    std::vector<double> q(2), expected(2);
+    for (std::size_t k = 0; k < 2; ++k)
+        for (std::size_t local : {std::size_t{0}, sub.windowEnd - sub.windowStart})
+        {
+            sub.otherPaths[k].getConfig(local, q.data());
+            plan.getConfig(sub.others[k], sub.windowStart + local, expected.data());
+            EXPECT_EQ(q, expected);
+        }
+    // A hierarchy that does not use the context gets none.
+    EXPECT_TRUE(ConflictResolver(si, settings, {std::make_shared<RecordingSolver>()})
+                    .makeSubproblem(plan, {0, 2}, t, 0)
+                    .others.empty());
+    // Far robots are not the context: Mobile Cross 4's rows are 5 apart.
+    const MultiRobotProblem cross = scenarios::createMobileCross(4);
+    MultiRobotPlan rows(*cross.getSpaceInformation());
+    for (std::size_t r = 0; r < 4; ++r)
+        rows.setRobotPath(r, test::straightLine(cross.getStart(r), cross.getGoal(r), 128.));
+    EXPECT_TRUE(ConflictResolver(*cross.getSpaceInformation(), settings, {std::make_shared<ContextSolver>()})
+                    .makeSubproblem(rows, {0, 1}, 1280, 0)
+                    .others.empty());
 }
 
 TEST(ArcSettings, GrowthSchedulesAndProfiles)

@@ -47,7 +47,7 @@ expect 2 "no solution file" "$bin/ompl_parc_validate"
 expect 2 "substeps must be a whole number from 1 to 1024 (got '0')" "$bin/ompl_parc_validate" --substeps 0 "$tmp/sol.json"
 expect 2 "substeps must be a whole number from 1 to 1024 (got '4294967295')" \
     "$bin/ompl_parc_validate" --substeps 4294967295 "$tmp/sol.json"
-expect 2 "unknown scenario 'warehouse' (valid: mobile_circle, mobile_cross, panda_cage, planar_cross)" \
+expect 2 "unknown scenario 'warehouse' (valid: crossing, field, mobile_circle, mobile_cross, panda_cage, panda_cell, planar_cell, planar_cross, ring, rooms)" \
     "$bin/ompl_parc_demo" --scenario warehouse
 expect 2 "even number of robots" "$bin/ompl_parc_demo" --robots 5
 expect 2 "time-limit must be positive" "$bin/ompl_parc_demo" --time-limit 0

@@ -174,6 +174,13 @@ namespace ompl_parc::scenarios
     MultiRobotProblem generatePandaCageTask(std::size_t robots, std::size_t task)
     {
         checkTask(robots, task);
+        return generatePandaCageProblem(robots, static_cast<std::uint32_t>(1000 * robots + task),
+                                        "panda_cage_" + std::to_string(robots) + "_" + std::to_string(task));
+    }
+
+    MultiRobotProblem generatePandaCageProblem(std::size_t robots, std::uint32_t seed, const std::string &name)
+    {
+        checkTask(robots, 0);
         const auto environment = createCage();
         std::vector<std::shared_ptr<UrdfArm>> team;
         for (const auto &base : basePoses(robots))
@@ -181,7 +188,7 @@ namespace ompl_parc::scenarios
                                                      "panda_link0", "panda_link8", base));
         // The authors' effort: 100 targets per robot and 100 team restarts for 2 robots, 200 for 4, ... 400 for 16.
         const auto attempts = static_cast<unsigned int>(100 * std::log2(static_cast<double>(robots)));
-        std::mt19937 rng(static_cast<unsigned int>(1000 * robots + task));
+        std::mt19937 rng(seed);
         // A task the robots might solve without coordinating is drawn again: with each of ARC seeds 1, 2 and 3,
         // some pair's individual paths must collide (one seed alone lets lucky paths through).
         constexpr unsigned int CANDIDATES = 200;
@@ -197,8 +204,7 @@ namespace ompl_parc::scenarios
         {
             auto starts = placeTeam(team, attempts, rng);
             auto goals = placeTeam(team, attempts, rng);
-            MultiRobotProblem problem(si, std::move(starts), std::move(goals),
-                                      "panda_cage_" + std::to_string(robots) + "_" + std::to_string(task));
+            MultiRobotProblem problem(si, std::move(starts), std::move(goals), name);
             if (needsCoordination(problem))
                 return problem;
         }

@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,10 @@ namespace ompl_parc
             tasks are stored rather than regenerated. Throws ompl::Exception if no team fits or no task needs
            coordination. */
         MultiRobotProblem generatePandaCageTask(std::size_t robots, std::size_t task);
+
+        /** \brief generatePandaCageTask()'s draw from the random seed \e seed, for a problem named \e name (task
+            \e task of the stored tasks has seed 1000 * robots + task). */
+        MultiRobotProblem generatePandaCageProblem(std::size_t robots, std::uint32_t seed, const std::string &name);
     }  // namespace scenarios
 }  // namespace ompl_parc
 

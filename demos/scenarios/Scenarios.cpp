@@ -3,10 +3,12 @@
 #include "ompl_parc/robots/DiscRobot.h"
 #include "ompl_parc/robots/PlanarArm.h"
 #include "ompl_parc/scenarios/PandaCage.h"
+#include "ompl_parc/scenarios/ProblemFamilies.h"
 
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -141,12 +143,24 @@ namespace ompl_parc::scenarios
 
         const std::map<std::string, Builder> &builders()
         {
-            static const std::map<std::string, Builder> table = {
-                {"mobile_circle", singleTask("mobile_circle", createMobileCircle)},
-                {"mobile_cross", singleTask("mobile_cross", createMobileCross)},
-                {"planar_cross", singleTask("planar_cross", createPlanarCross)},
-                {"panda_cage", [](std::size_t robots, double resolution, std::size_t task)
-                 { return createPandaCage(robots, task, resolution); }}};
+            static const std::map<std::string, Builder> table = []
+            {
+                std::map<std::string, Builder> builders = {
+                    {"mobile_circle", singleTask("mobile_circle", createMobileCircle)},
+                    {"mobile_cross", singleTask("mobile_cross", createMobileCross)},
+                    {"planar_cross", singleTask("planar_cross", createPlanarCross)},
+                    {"panda_cage", [](std::size_t robots, double resolution, std::size_t task)
+                     { return createPandaCage(robots, task, resolution); }}};
+                // A generated family's task is the instance.
+                for (const auto &family : familyNames())
+                    builders[family] = [family](std::size_t robots, double resolution, std::size_t task)
+                    {
+                        if (task > UINT32_MAX)
+                            throw ompl::Exception("Scenarios", "an instance must be below 2^32");
+                        return generateFamilyInstance(family, robots, static_cast<std::uint32_t>(task), resolution);
+                    };
+                return builders;
+            }();
             return table;
         }
     }  // namespace

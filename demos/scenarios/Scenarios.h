@@ -26,10 +26,12 @@ namespace ompl_parc
         /** \brief Two facing columns of 3-link planar arms between walls, swinging from +30 to -30 degrees. */
         MultiRobotProblem createPlanarCross(std::size_t robots, double resolution = 128.);
 
-        /** \brief Build a scenario by name ("mobile_cross", "mobile_circle", "planar_cross", "panda_cage");
-            throws ompl::Exception listing the valid names for an unknown one. \e task picks one of the
-            scenario's tasks: Panda Cage has PANDA_CAGE_TASKS (createPandaCage(robots, task), PandaCage.h), the
-            others one (task 0); throws ompl::Exception for a task the scenario does not have. */
+        /** \brief Build a scenario by name ("mobile_cross", "mobile_circle", "planar_cross", "panda_cage", or a
+            generated family of ProblemFamilies.h); throws ompl::Exception listing the valid names for an unknown
+            one. \e task picks one of the scenario's tasks: Panda Cage has PANDA_CAGE_TASKS
+            (createPandaCage(robots, task), PandaCage.h), a family's task is the instance
+            (generateFamilyInstance(name, robots, task)), the others have one (task 0); throws ompl::Exception
+            for a task the scenario does not have. */
         MultiRobotProblem createScenario(const std::string &name, std::size_t robots, double resolution = 128.,
                                          std::size_t task = 0);
 

@@ -77,7 +77,10 @@ ompl_parc::ArcSettings::Solvers ompl_parc::ArcSettings::solversFromString(const 
         return Solvers::COMPOSITE;
     if (name == "prioritized")
         return Solvers::PRIORITIZED;
-    throw ompl::Exception("ArcSettings", "unknown solvers '" + name + "' (valid: hierarchy, composite, prioritized)");
+    if (name == "composite-first")
+        return Solvers::COMPOSITE_FIRST;
+    throw ompl::Exception("ArcSettings", "unknown solvers '" + name +
+                                             "' (valid: hierarchy, composite, prioritized, composite-first)");
 }
 
 std::string ompl_parc::ArcSettings::toString(Solvers solvers)
@@ -90,6 +93,8 @@ std::string ompl_parc::ArcSettings::toString(Solvers solvers)
             return "composite";
         case Solvers::PRIORITIZED:
             return "prioritized";
+        case Solvers::COMPOSITE_FIRST:
+            return "composite-first";
     }
     return "";
 }

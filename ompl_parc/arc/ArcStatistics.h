@@ -12,7 +12,11 @@ namespace ompl_parc
     {
         double initialWall{0.}, initialCpu{0.}, detectionWall{0.}, detectionCpu{0.}, resolutionWall{0.},
             resolutionCpu{0.};
-        unsigned int conflicts{0}, repairs{0}, solverCalls{0}, expansions{0}, teamGrowths{0}, globalRepairs{0};
+        unsigned int conflicts{0}, repairs{0}, teamGrowths{0}, globalRepairs{0};
+        /** \brief Over every repair attempt, successful or not (failed ones explain a timeout). */
+        unsigned int solverCalls{0}, expansions{0};
+        /** \brief The longest single subproblem solver call, in seconds of wall time. */
+        double longestSolverCall{0.};
         std::map<std::string, unsigned int> solverWins;
     };
 

@@ -1,10 +1,16 @@
 #include "ompl_parc/arc/ConflictResolver.h"
 
+#include "ompl_parc/collision/CapsuleCollision.h"
+#include "ompl_parc/collision/CollisionBody.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
 
 #include <ompl/util/Exception.h>
+#include <ompl/util/Time.h>
 
 #include <algorithm>
+#include <array>
+#include <climits>
+#include <cmath>
 
 namespace ob = ompl::base;
 
@@ -21,10 +27,12 @@ namespace
 
 ompl_parc::ConflictResolver::ConflictResolver(const MultiRobotSpaceInformation &si, ArcSettings settings,
                                               std::vector<SubproblemSolverPtr> hierarchy)
-    : si_(si), settings_(settings), hierarchy_(std::move(hierarchy))
+    : si_(si), settings_(settings), hierarchy_(std::move(hierarchy)), made_(ompl::time::now())
 {
     if (hierarchy_.empty())
         throw ompl::Exception("ConflictResolver", "needs at least one subproblem solver");
+    usesContext_ = std::any_of(hierarchy_.begin(), hierarchy_.end(),
+                               [](const SubproblemSolverPtr &solver) { return solver->usesContext(); });
 }
 
 bool ompl_parc::ConflictResolver::teamClear(const MultiRobotPlan &plan, const std::vector<std::size_t> &team,
@@ -85,6 +93,76 @@ void ompl_parc::ConflictResolver::fillBounds(const MultiRobotPlan &plan, Subprob
     }
 }
 
+void ompl_parc::ConflictResolver::fillContext(const MultiRobotPlan &plan, Subproblem &sub) const
+{
+    sub.others.clear();
+    sub.otherPaths.clear();
+    if (!usesContext_)
+        return;
+    // A robot moves at most a quarter unit between two sampled bodies (vMax 1): boxes grow by that and more.
+    constexpr double MARGIN = 0.5;
+    const auto stride = static_cast<std::size_t>(std::max(1., std::round(0.25 * si_.getResolution())));
+    CollisionBody body;
+    std::vector<double> q;
+    const auto bodyAt = [&](std::size_t r, std::size_t t, CollisionBody &out)
+    {
+        q.resize(plan.getDimension(r));
+        plan.getConfig(r, t, q.data());
+        si_.getRobot(r)->computeBody(q.data(), out);
+    };
+    using Box = std::array<std::array<double, 3>, 2>;
+    const auto boxOf = [&](std::size_t r)
+    {
+        Box box{{{HUGE_VAL, HUGE_VAL, HUGE_VAL}, {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}}};
+        for (std::size_t t = sub.windowStart;; t = std::min(t + stride, sub.windowEnd))
+        {
+            bodyAt(r, t, body);
+            body.expandBox(box[0], box[1]);
+            if (t == sub.windowEnd)
+                break;
+        }
+        return box;
+    };
+    Box team{{{HUGE_VAL, HUGE_VAL, HUGE_VAL}, {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}}};
+    std::vector<CollisionBody> starts(sub.robots.size()), goals(sub.robots.size());
+    for (std::size_t k = 0; k < sub.robots.size(); ++k)
+    {
+        const Box box = boxOf(sub.robots[k]);
+        for (int d = 0; d < 3; ++d)
+        {
+            team[0][d] = std::min(team[0][d], box[0][d] - MARGIN);
+            team[1][d] = std::max(team[1][d], box[1][d] + MARGIN);
+        }
+        bodyAt(sub.robots[k], sub.windowStart, starts[k]);
+        bodyAt(sub.robots[k], sub.windowEnd, goals[k]);
+    }
+    CollisionBody first, last;
+    for (std::size_t r = 0, k = 0; r < plan.getRobotCount(); ++r)
+    {
+        if (k < sub.robots.size() && sub.robots[k] == r)
+        {
+            ++k;
+            continue;
+        }
+        const Box box = boxOf(r);
+        bool near = true;
+        for (int d = 0; d < 3; ++d)
+            near = near && box[0][d] <= team[1][d] && box[1][d] >= team[0][d];
+        if (!near)
+            continue;
+        bodyAt(r, sub.windowStart, first);
+        bodyAt(r, sub.windowEnd, last);
+        bool blocking = false;
+        for (std::size_t j = 0; j < sub.robots.size() && !blocking; ++j)
+            blocking = bodiesCollide(first, starts[j]) || bodiesCollide(last, goals[j]);
+        if (blocking)
+            continue;
+        sub.others.push_back(r);
+        sub.otherPaths.emplace_back(plan.getDimension(r));
+        plan.getPath(r).appendRange(sub.windowStart, sub.windowEnd, sub.otherPaths.back());
+    }
+}
+
 ompl_parc::Subproblem ompl_parc::ConflictResolver::makeSubproblem(const MultiRobotPlan &plan,
                                                                   const std::vector<std::size_t> &team,
                                                                   std::size_t timestep, unsigned int attempt) const
@@ -102,18 +180,23 @@ ompl_parc::Subproblem ompl_parc::ConflictResolver::makeSubproblem(const MultiRob
         sub.windowEnd = std::min(sub.windowEnd + step, latest);
     fillEndpoints(plan, sub);
     fillBounds(plan, sub);
+    fillContext(plan, sub);
     sub.sampleCap = settings_.sampleCap;
     return sub;
 }
 
 ompl_parc::Subproblem ompl_parc::ConflictResolver::makeGlobal(const MultiRobotPlan &plan,
-                                                              const std::vector<std::size_t> &team) const
+                                                              const std::vector<std::size_t> &team,
+                                                              unsigned int round) const
 {
     Subproblem sub;
     sub.robots = team;
     sub.windowStart = 0;
     sub.windowEnd = latestArrival(plan, team);
     fillEndpoints(plan, sub);
+    fillContext(plan, sub);
+    const double cap = std::ldexp(static_cast<double>(settings_.sampleCap), static_cast<int>(std::min(round, 64u)));
+    sub.sampleCap = static_cast<unsigned int>(std::min(cap, static_cast<double>(UINT_MAX)));
     return sub;
 }
 
@@ -121,31 +204,46 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(const Mult
                                                                       const std::vector<std::size_t> &team,
                                                                       std::size_t timestep,
                                                                       const ob::PlannerTerminationCondition &ptc,
-                                                                      std::uint_fast32_t seed) const
+                                                                      std::uint_fast32_t seed,
+                                                                      ResolveTrace *trace) const
 {
+    ResolveTrace local;
+    ResolveTrace &t = trace != nullptr ? *trace : local;
+    t = ResolveTrace();
     Repair repair;
     std::size_t lastStart = 0, lastEnd = 0;
     for (unsigned int k = 0; !ptc; ++k)
     {
-        Subproblem sub = repair.global ? makeGlobal(plan, team) : makeSubproblem(plan, team, timestep, k);
+        Subproblem sub =
+            repair.global ? makeGlobal(plan, team, t.globalRounds) : makeSubproblem(plan, team, timestep, k);
         const bool unchanged = k > 0 && sub.windowStart == lastStart && sub.windowEnd == lastEnd;
         if (!repair.global && (unchanged || (sub.windowStart == 0 && sub.windowEnd == latestArrival(plan, team))))
         {
             repair.global = true;
-            sub = makeGlobal(plan, team);
+            sub = makeGlobal(plan, team, 0);
         }
+        t.globalRounds += repair.global ? 1 : 0;
         lastStart = sub.windowStart;
         lastEnd = sub.windowEnd;
-        repair.expansions = k;
+        t.expansions = k;
         for (const auto &solver : hierarchy_)
         {
             if (ptc)
                 break;
-            ++repair.attempts;
-            if (solver->solve(si_, sub, ptc, mixSeed(seed, repair.attempts), repair.patch))
+            ++t.calls;
+            const auto start = ompl::time::now();
+            const double cap = std::max(MIN_CALL_SECONDS, ompl::time::seconds(start - made_));
+            const auto capped = ob::plannerOrTerminationCondition(
+                ptc, ob::PlannerTerminationCondition([start, cap]
+                                                     { return ompl::time::seconds(ompl::time::now() - start) > cap; }));
+            const bool solved = solver->solve(si_, sub, capped, mixSeed(seed, t.calls), repair.patch);
+            t.longestCall = std::max(t.longestCall, ompl::time::seconds(ompl::time::now() - start));
+            if (solved)
             {
                 repair.subproblem = std::move(sub);
                 repair.solver = solver->getName();
+                repair.attempts = t.calls;
+                repair.expansions = t.expansions;
                 return repair;
             }
         }

@@ -5,6 +5,8 @@
 #include "ompl_parc/arc/SubproblemSolver.h"
 #include "ompl_parc/model/MultiRobotPlan.h"
 
+#include <ompl/util/Time.h>
+
 #include <optional>
 
 namespace ompl_parc
@@ -20,6 +22,14 @@ namespace ompl_parc
         bool global{false};
     };
 
+    /** \brief What one resolve() did, success or not: the statistics of a failed repair, and the longest
+        single solver call (no call may hold the budget). */
+    struct ResolveTrace
+    {
+        unsigned int calls{0}, expansions{0}, globalRounds{0};
+        double longestCall{0.};
+    };
+
     /** \brief ARC's conflict resolution for one conflict: windows around the conflict that grow until a
         solver in the hierarchy succeeds, up to the global problem.
 
@@ -27,25 +37,36 @@ namespace ompl_parc
         (goal) side is first widened by ArcSettings::endpointStep until the team's states there are
         collision-free; local bounds follow ArcSettings. When a grown window equals the previous one, or
         covers the team's whole plan, the attempt becomes the global problem (global starts and goals, whole
-        spaces, no sample cap), retried until success or termination. resolve() only reads the plan, so
-        P-ARC runs several at once on disjoint teams. */
+        spaces), retried with fresh seeds until success or termination. Every call is bounded: a local window
+        by ArcSettings::sampleCap iterations, global round g by sampleCap x 2^g (a sample cap of 0 lifts these
+        caps); and every call, whatever the iterations cost, by time: it may run as long as the solve had run
+        before it started (at least MIN_CALL_SECONDS), since the resolver was made (RepairLoop::configure, at
+        each solve). So no call ever holds more than half of the time spent when the solve stops, while the
+        effort per call still grows geometrically. Only calls that reach the time cap make a seeded solve's
+        result depend on the machine's speed.
+        resolve() only reads the plan, so P-ARC runs several at once on disjoint teams. */
     class ConflictResolver
     {
       public:
+        /** \brief The least time cap of one solver call, in seconds. */
+        static constexpr double MIN_CALL_SECONDS = 0.05;
+
         ConflictResolver(const MultiRobotSpaceInformation &si, ArcSettings settings,
                          std::vector<SubproblemSolverPtr> hierarchy);
 
         /** \brief Repair the conflict of \e team at \e timestep of \e plan; none if \e ptc fired first. */
         std::optional<Repair> resolve(const MultiRobotPlan &plan, const std::vector<std::size_t> &team,
                                       std::size_t timestep, const ompl::base::PlannerTerminationCondition &ptc,
-                                      std::uint_fast32_t seed) const;
+                                      std::uint_fast32_t seed, ResolveTrace *trace = nullptr) const;
 
         /** \brief The subproblem of attempt \e attempt (0 = first window), before global promotion. */
         Subproblem makeSubproblem(const MultiRobotPlan &plan, const std::vector<std::size_t> &team,
                                   std::size_t timestep, unsigned int attempt) const;
 
-        /** \brief The team's whole problem: global starts and goals, no bounds, no sample cap. */
-        Subproblem makeGlobal(const MultiRobotPlan &plan, const std::vector<std::size_t> &team) const;
+        /** \brief The team's whole problem for global round \e round (0 = the first): global starts and goals, no
+            bounds, a sample cap of ArcSettings::sampleCap x 2^round (none when sampleCap is 0). */
+        Subproblem makeGlobal(const MultiRobotPlan &plan, const std::vector<std::size_t> &team,
+                              unsigned int round) const;
 
         const ArcSettings &getSettings() const { return settings_; }
 
@@ -53,10 +74,18 @@ namespace ompl_parc
         bool teamClear(const MultiRobotPlan &plan, const std::vector<std::size_t> &team, std::size_t timestep) const;
         void fillEndpoints(const MultiRobotPlan &plan, Subproblem &sub) const;
         void fillBounds(const MultiRobotPlan &plan, Subproblem &sub) const;
+        /** \brief Subproblem::others and otherPaths, when a solver of the hierarchy uses them: every robot
+            outside the team whose workspace box over the window (bodies every quarter unit of time) meets the
+            team's, except one that touches a team robot at the window's start or end (part of another
+            conflict, which no patch of this team can avoid). */
+        void fillContext(const MultiRobotPlan &plan, Subproblem &sub) const;
 
         const MultiRobotSpaceInformation &si_;
         ArcSettings settings_;
         std::vector<SubproblemSolverPtr> hierarchy_;
+        bool usesContext_{false};
+        /** \brief When the resolver was made: the time cap of a call is the time since. */
+        ompl::time::point made_;
     };
 }  // namespace ompl_parc
 

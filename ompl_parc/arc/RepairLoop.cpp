@@ -8,6 +8,7 @@
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
+#include <mutex>
 
 namespace ob = ompl::base;
 
@@ -119,6 +120,7 @@ bool ompl_parc::RepairLoop::repairBatch(const std::vector<BatchEntry> &batch,
     // Attempt 0 of the k-th conflict has the k-th conflict's seed whatever W is; extra OR attempts derive new ones.
     const unsigned int first = statistics_.conflicts;
     OrTaskStatistics stats;
+    std::mutex traced;  // every resolve's calls and longest call, found or not (one lock per resolve)
     const auto repairs =
         OrTaskRunner<Repair>(*pool_, options_.localOr)
             .run(
@@ -128,7 +130,14 @@ bool ompl_parc::RepairLoop::repairBatch(const std::vector<BatchEntry> &batch,
                     auto seed = mixSeed(seed_, REPAIR_SEEDS + first + task + 1);
                     if (attempt > 0)
                         seed = mixSeed(seed, attempt);
-                    return resolver_->resolve(plan_, batch[task].team, batch[task].conflict.timestep, stop, seed);
+                    ResolveTrace trace;
+                    auto repair =
+                        resolver_->resolve(plan_, batch[task].team, batch[task].conflict.timestep, stop, seed, &trace);
+                    const std::lock_guard<std::mutex> lock(traced);
+                    statistics_.solverCalls += trace.calls;
+                    statistics_.expansions += trace.expansions;
+                    statistics_.longestSolverCall = std::max(statistics_.longestSolverCall, trace.longestCall);
+                    return repair;
                 },
                 stats);
     parallel_.repairAttempts += stats.attempts;
@@ -155,8 +164,6 @@ void ompl_parc::RepairLoop::applyRepair(const Repair &repair)
     const std::size_t duration = repair.patch.getDuration();
     cache_.add(sub.robots, sub.windowStart, sub.windowStart + duration);
     ++statistics_.repairs;
-    statistics_.solverCalls += repair.attempts;
-    statistics_.expansions += repair.expansions;
     statistics_.globalRepairs += repair.global ? 1 : 0;
     ++statistics_.solverWins[repair.solver];
 }

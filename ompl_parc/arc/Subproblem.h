@@ -1,6 +1,8 @@
 #ifndef OMPL_PARC_SUBPROBLEM_
 #define OMPL_PARC_SUBPROBLEM_
 
+#include "ompl_parc/model/TimedPath.h"
+
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/base/spaces/RealVectorBounds.h>
 
@@ -27,8 +29,14 @@ namespace ompl_parc
         std::vector<std::vector<double>> starts, goals;
         /** \brief Local sampling bounds of each team robot; empty: each robot's whole space. */
         std::vector<ompl::base::RealVectorBounds> bounds;
-        /** \brief Largest number of planner iterations; 0: no cap (the global problem). */
+        /** \brief Largest number of planner iterations; 0: no cap. */
         unsigned int sampleCap{0};
+        /** \brief Context: robots outside the team whose plans come near it during the window, and those plans
+            over [windowStart, windowEnd] (timestep 0 = windowStart, held afterwards). A time-aware solver
+            (SubproblemSolver::usesContext()) avoids them, so that a patch seldom makes new conflicts with the
+            rest of the team: advisory only, the repaired plan is checked for conflicts as any other. */
+        std::vector<std::size_t> others;
+        std::vector<TimedPath> otherPaths;
 
         /** \brief Empty if the subproblem is well formed for the team of \e si, else the reason. */
         std::string check(const MultiRobotSpaceInformation &si) const;

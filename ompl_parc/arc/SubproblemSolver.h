@@ -26,6 +26,13 @@ namespace ompl_parc
         /** \brief A short name for statistics ("pp-st-rrt", "composite-rrtc"). */
         virtual std::string getName() const = 0;
 
+        /** \brief Whether solve() avoids the subproblem's context (Subproblem::others), which is then worth
+            filling. */
+        virtual bool usesContext() const
+        {
+            return false;
+        }
+
         /** \brief Solve \e subproblem for the robots of \e si; on success fill \e patch and return true.
             Returns false (never throws, never blocks past \e ptc) when it gives up. */
         virtual bool solve(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,

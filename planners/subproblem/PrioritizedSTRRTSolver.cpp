@@ -109,6 +109,9 @@ bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &
         auto obstacles = std::make_shared<DynamicObstacles>(team[k], si.getResolution());
         for (std::size_t j : planned)
             obstacles->addPath(*team[j], paths[j]);
+        if (settings_.avoidOthers)
+            for (std::size_t o = 0; o < subproblem.others.size(); ++o)
+                obstacles->addPath(*si.getRobot(subproblem.others[o]), subproblem.otherPaths[o]);
         const auto hold = obstacles->earliestHold(subproblem.goals[k].data());
         if (!obstacles->isClear(subproblem.starts[k].data(), 0) || !hold)
             return false;

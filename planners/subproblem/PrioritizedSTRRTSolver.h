@@ -17,6 +17,9 @@ namespace ompl_parc
         double range{1.};
         /** \brief Priority order: the team's order, or shuffled with the solve's seed. */
         bool shuffle{false};
+        /** \brief Plan around the subproblem's context too (the other robots near the window, as moving
+            obstacles), so that a patch seldom collides with robots outside the team. */
+        bool avoidOthers{true};
         /** \brief "off", "radius" or "knearest". */
         std::string rewiring{"off"};
         unsigned int batchSize{4096};
@@ -26,7 +29,8 @@ namespace ompl_parc
 
     /** \brief Decoupled subproblem solver (PP-ST-RRT): the team's robots are planned one after another in
         priority order, each with ST-RRT (our STRRTstar, for its minimum goal time, which OMPL's lacks) in its
-        own (local-bounded) space x time, the robots planned before it being moving obstacles.
+        own (local-bounded) space x time, the robots planned before it and the subproblem's context (robots
+        outside the team near the window, when avoidOthers is set) being moving obstacles.
 
         A robot's goal counts only from the earliest timestep from which it can stay there forever without
         being hit by an earlier robot (the goal hold); if an earlier robot ends on the goal for good, the
@@ -40,6 +44,7 @@ namespace ompl_parc
         explicit PrioritizedSTRRTSolver(PrioritizedSTRRTSettings settings = PrioritizedSTRRTSettings());
 
         std::string getName() const override { return "pp-st-rrt"; }
+        bool usesContext() const override { return settings_.avoidOthers; }
         const PrioritizedSTRRTSettings &getSettings() const { return settings_; }
 
         bool solve(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
