@@ -116,13 +116,13 @@ ompl_parc::tools::BenchmarkConfig ompl_parc::tools::BenchmarkConfig::parse(std::
 
     BenchmarkConfig config;
     const pt::ptree &problem = tree.get_child("problem");
-    checkKeys(problem, "problem", {"name", "scenario", "robots", "resolution", "file"});
+    checkKeys(problem, "problem", {"name", "scenario", "robots", "resolution", "task", "instances", "file"});
     config.problemName_ = required(problem, "problem", "name");
     checkFileName(config.problemName_, "[problem] name");
     if (problem.count("file") != 0)
     {
         // A scenario file holds the team and the resolution itself.
-        for (const char *key : {"scenario", "robots", "resolution"})
+        for (const char *key : {"scenario", "robots", "resolution", "task", "instances"})
             if (problem.count(key) != 0)
                 throw std::invalid_argument(
                     std::string("[problem] give either file or scenario and robots, not both (") + key + " is set)");
@@ -135,6 +135,8 @@ ompl_parc::tools::BenchmarkConfig ompl_parc::tools::BenchmarkConfig::parse(std::
         config.scenario_ = required(problem, "problem", "scenario");
         config.robots_ = number<std::size_t>(problem, "problem", "robots", std::nullopt, 2, 10000);
         config.resolution_ = number<double>(problem, "problem", "resolution", 128., 1e-9, 1e9);
+        config.task_ = number<std::size_t>(problem, "problem", "task", 0, 0, 1000000);
+        config.instances_ = number<std::size_t>(problem, "problem", "instances", 1, 1, 100000);
     }
 
     const pt::ptree &benchmark = tree.get_child("benchmark");

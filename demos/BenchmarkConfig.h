@@ -33,6 +33,12 @@ namespace ompl_parc::tools
         robots = 8
         # optional: timesteps per unit of distance (128)
         resolution = 128
+        # optional: the scenario's task (0), and how many consecutive tasks to run (1): with a generated
+        # family (ProblemFamilies.h) "instances = 20" runs every planner run_count times on each of 20 random
+        # instances, logs each to <output>/<name>_<task>.log and reports success rate and median time per
+        # planner over all of them
+        task = 0
+        instances = 1
         # or instead of scenario, robots and resolution: a scenario file (ScenarioFile.h), relative to the
         # config file's folder
         file = ../../scenarios/doorway_swap.json
@@ -78,6 +84,9 @@ namespace ompl_parc::tools
         const std::string &getProblemName() const { return problemName_; }
         const std::string &getScenario() const { return scenario_; }
         std::size_t getRobots() const { return robots_; }
+        /** \brief The first task of the scenario, and how many consecutive tasks make the experiment. */
+        std::size_t getTask() const { return task_; }
+        std::size_t getInstances() const { return instances_; }
         double getResolution() const { return resolution_; }
         const std::string &getScenarioFile() const { return scenarioFile_; }
 
@@ -92,7 +101,7 @@ namespace ompl_parc::tools
 
       private:
         std::string problemName_, scenario_, scenarioFile_;
-        std::size_t robots_{0};
+        std::size_t robots_{0}, task_{0}, instances_{1};
         double resolution_{128.};
         double timeLimit_{0.}, memLimit_{0.};
         unsigned int runCount_{0};

@@ -1,7 +1,9 @@
 /* ompl_parc_benchmark CONFIG.cfg: run an OMPL.app-style benchmark configuration (see BenchmarkConfig.h) with
    OMPL's own ompl::tools::Benchmark. Run j of every planner is seeded with [benchmark] seed + j; every solution
    is re-checked by the independent SolutionValidator. Writes <output>/<name>.log (OMPL's log format, for
-   ompl_benchmark_statistics) and <output>/<name>.csv (one row per run, for scripts/plot_benchmarks.py).
+   ompl_benchmark_statistics) and <output>/<name>.csv (one row per run, for scripts/plot_benchmarks.py); with
+   [problem] instances = N, one log per task (<name>_<task>.log), one CSV, and a table of success rate and
+   median time per planner on stdout.
    Exit 0: all runs done and every solution valid; 1: some solution failed validation; 2: bad input. */
 #include "BenchmarkConfig.h"
 #include "ToolSupport.h"
@@ -14,9 +16,12 @@
 #include <ompl/geometric/SimpleSetup.h>
 #include <ompl/tools/benchmark/Benchmark.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
+#include <map>
 
 namespace ob = ompl::base;
 namespace po = boost::program_options;
@@ -64,6 +69,179 @@ namespace
             throw std::invalid_argument("cannot write '" + path.string() + "' (is the output folder writable?)");
         return out;
     }
+
+    /** \brief One problem of the experiment, its CSV scenario label and the planners made for it. */
+    struct Instance
+    {
+        MultiRobotProblem problem;
+        std::string scenario;
+        std::size_t task{0};
+        std::vector<ob::PlannerPtr> planners;
+    };
+
+    /** \brief Per planner name, each run's (valid solution, time in seconds). */
+    using Tally = std::map<std::string, std::vector<std::pair<bool, double>>>;
+
+    /** \brief The problem of \e task with its planners, checked: every input error shows before any run. */
+    Instance makeInstance(const tools::BenchmarkConfig &config, std::size_t task)
+    {
+        Instance instance{config.getScenarioFile().empty() ?
+                              scenarios::createScenario(config.getScenario(), config.getRobots(),
+                                                        config.getResolution(), task) :
+                              ScenarioFile::read(config.getScenarioFile()),
+                          config.getScenario(), task, {}};
+        const MultiRobotProblem &problem = instance.problem;
+        if (!config.getScenarioFile().empty())
+            instance.scenario = problem.getName().empty() ?
+                                    std::filesystem::path(config.getScenarioFile()).stem().string() :
+                                    problem.getName();
+        else if (config.getInstances() > 1 || task > 0)
+            instance.scenario = problem.getName().empty() ? config.getScenario() + "_" + std::to_string(task) :
+                                                            problem.getName();
+        for (const std::string &reason :
+             {problem.checkEndpoints(), problem.getSpaceInformation()->checkPlanningResolution()})
+            if (!reason.empty())
+                throw std::invalid_argument(reason);
+        for (const auto &entry : config.getPlanners())
+        {
+            auto planner = tools::createPlanner(entry.type, problem.getSpaceInformation(), entry.params);
+            planner->setName(entry.name);
+            if (const unsigned int budget = workerBudget(*planner); budget > config.getWorkers())
+                throw std::invalid_argument("planner '" + entry.name + "' needs " + std::to_string(budget) +
+                                            " workers but [benchmark] workers = " +
+                                            std::to_string(config.getWorkers()));
+            if (!planner->params().hasParam("seed") && task == config.getTask())
+                std::cerr << "ompl_parc_benchmark: planner '" << entry.name
+                          << "' has no seed parameter: its runs use OMPL's global random sequence\n";
+            instance.planners.push_back(planner);
+        }
+        return instance;
+    }
+
+    /** \brief Success rate and median time (failures counted at the time limit) per planner, as a Markdown
+        table: the robustness view of an experiment over many instances. */
+    void printSummary(const tools::BenchmarkConfig &config, const Tally &tally, std::ostream &out)
+    {
+        out << "| planner | solved | median time (s, failures at " << config.getTimeLimit() << " s) |\n"
+            << "|---|---|---|\n";
+        for (const auto &entry : config.getPlanners())
+        {
+            const auto it = tally.find(entry.name);
+            if (it == tally.end())
+                continue;
+            std::vector<double> times;
+            std::size_t solved = 0;
+            for (const auto &[success, time] : it->second)
+            {
+                solved += success ? 1 : 0;
+                times.push_back(success ? time : config.getTimeLimit());
+            }
+            std::sort(times.begin(), times.end());
+            const std::size_t n = times.size();
+            const double median = n % 2 == 1 ? times[n / 2] : 0.5 * (times[n / 2 - 1] + times[n / 2]);
+            out << "| " << entry.name << " | " << solved << "/" << n << " | " << std::fixed << std::setprecision(3)
+                << median << " |\n";
+        }
+    }
+
+    /** \brief Run every planner of \e instance run_count times with OMPL's Benchmark, write its log to \e logPath
+        and one CSV row per run, and tally the runs; returns the number of invalid solutions. */
+    std::size_t runInstance(const tools::BenchmarkConfig &config, const Instance &instance,
+                            const std::filesystem::path &logPath, std::ostream &csv, Tally &tally)
+    {
+        const MultiRobotProblem &problem = instance.problem;
+        const auto &si = problem.getSpaceInformation();
+        const auto &planners = instance.planners;
+        ompl::geometric::SimpleSetup setup(si);
+        ob::ScopedState<> start(si), goal(si);
+        const auto pdef = problem.createProblemDefinition();
+        start = pdef->getStartState(0);
+        goal = pdef->getGoal()->as<ob::GoalState>()->getState();
+        setup.setStartAndGoalStates(start, goal);
+        setup.setPlanner(planners.front());  // else SimpleSetup allocates a default planner it never runs
+
+        ompl::tools::Benchmark benchmark(setup, config.getProblemName());
+        benchmark.addExperimentParameter("robots", "INTEGER", std::to_string(si->getRobotCount()));
+        benchmark.addExperimentParameter("resolution", "REAL", std::to_string(si->getResolution()));
+        benchmark.addExperimentParameter("base_seed", "INTEGER", std::to_string(config.getSeed()));
+        benchmark.addExperimentParameter("worker_budget", "INTEGER", std::to_string(config.getWorkers()));
+        benchmark.addExperimentParameter("task", "INTEGER", std::to_string(instance.task));
+        for (const auto &planner : planners)
+            benchmark.addPlanner(planner);
+
+        const auto seedOf = [&] { return config.getSeed() + benchmark.getStatus().activeRun; };
+        benchmark.setPreRunEvent(
+            [&](const ob::PlannerPtr &planner)
+            {
+                if (planner->params().hasParam("seed"))
+                    planner->params().setParam("seed", std::to_string(seedOf()));
+            });
+
+        const SolutionValidator validator(problem);
+        const std::size_t total = planners.size() * config.getRunCount();
+        std::size_t done = 0, invalid = 0;
+        std::map<std::string, std::string> typeOf;
+        for (const auto &entry : config.getPlanners())
+            typeOf[entry.name] = entry.type;
+        benchmark.setPostRunEvent(
+            [&](const ob::PlannerPtr &planner, ompl::tools::Benchmark::RunProperties &run)
+            {
+                // A run succeeds only with an exact solution that the independent validator accepts.
+                bool success = false;
+                std::string verdict = "no exact solution";
+                if (planner->getProblemDefinition()->hasExactSolution())
+                {
+                    try
+                    {
+                        const MultiRobotPlan plan = tools::planOf(*planner, si, false);
+                        const ValidationReport report = validator.validate(plan);
+                        success = report.valid;
+                        verdict = report.valid ? "valid" : report.message;
+                        run["makespan INTEGER"] = std::to_string(plan.getMakespan());
+                        run["sum_of_costs INTEGER"] = std::to_string(plan.getSumOfCosts());
+                    }
+                    catch (const std::exception &e)
+                    {
+                        verdict = std::string("validation failed: ") + e.what();
+                    }
+                    if (!success)
+                    {
+                        ++invalid;
+                        std::cerr << "ompl_parc_benchmark: *** INVALID SOLUTION *** planner '" << planner->getName()
+                                  << "' run " << benchmark.getStatus().activeRun << " (seed " << seedOf()
+                                  << "): " << verdict << std::endl;
+                    }
+                }
+                run["success BOOLEAN"] = success ? "1" : "0";
+                run["validation STRING"] = verdict;
+                run["seed INTEGER"] = std::to_string(seedOf());
+                tally[planner->getName()].emplace_back(success, std::stod(run["time REAL"]));
+
+                const auto status =
+                    ob::PlannerStatus(static_cast<ob::PlannerStatus::StatusType>(std::stoi(run["status ENUM"])));
+                csv << instance.scenario << ',' << si->getRobotCount() << ',' << seedOf() << ',' << planner->getName()
+                    << ',' << typeOf[planner->getName()] << ',' << workerBudget(*planner) << ',' << (success ? 1 : 0)
+                    << ',' << status.asString();
+                for (const auto &column : csvColumns())
+                {
+                    const auto it = run.find(column.second);
+                    csv << ',' << (it == run.end() ? "" : it->second);
+                }
+                csv << std::endl;
+                std::cerr << "[" << ++done << "/" << total << "] " << config.getProblemName() << " " << planner->getName()
+                          << " seed " << seedOf() << ": " << (success ? "solved" : status.asString()) << " in "
+                          << run["time REAL"] << " s" << std::endl;
+            });
+
+        ompl::tools::Benchmark::Request request(config.getTimeLimit(), config.getMemLimit(), config.getRunCount());
+        request.displayProgress = false;    // our progress line goes to stderr instead
+        request.saveConsoleOutput = false;  // no console log file next to the results
+        request.simplify = false;           // the planners' own solutions are what is compared
+        benchmark.benchmark(request);
+        if (!benchmark.saveResultsToFile(logPath.string().c_str()))
+            throw std::runtime_error("could not write '" + logPath.string() + "'");
+        return invalid;
+    }
 }  // namespace
 
 int main(int argc, char **argv)
@@ -87,36 +265,14 @@ int main(int argc, char **argv)
 
             // Everything that can be wrong with the input is checked before the first run.
             const auto config = tools::BenchmarkConfig::read(vm["config"].as<std::string>());
-            const MultiRobotProblem problem =
-                config.getScenarioFile().empty()
-                    ? scenarios::createScenario(config.getScenario(), config.getRobots(), config.getResolution())
-                    : ScenarioFile::read(config.getScenarioFile());
-            std::string scenario = config.getScenario();  // the CSV's scenario column
-            if (!config.getScenarioFile().empty())
-                scenario = problem.getName().empty() ? std::filesystem::path(config.getScenarioFile()).stem().string()
-                                                     : problem.getName();
-            if (const std::string reason = problem.checkEndpoints(); !reason.empty())
-                throw std::invalid_argument(reason);
-            const auto &si = problem.getSpaceInformation();
-
-            std::vector<ob::PlannerPtr> planners;
-            for (const auto &entry : config.getPlanners())
-            {
-                auto planner = tools::createPlanner(entry.type, si, entry.params);
-                planner->setName(entry.name);
-                if (const unsigned int budget = workerBudget(*planner); budget > config.getWorkers())
-                    throw std::invalid_argument(
-                        "planner '" + entry.name + "' needs " + std::to_string(budget) +
-                        " workers but [benchmark] workers = " + std::to_string(config.getWorkers()));
-                if (!planner->params().hasParam("seed"))
-                    std::cerr << "ompl_parc_benchmark: planner '" << entry.name
-                              << "' has no seed parameter: its runs use OMPL's global random sequence\n";
-                planners.push_back(planner);
-            }
+            std::vector<Instance> instances;
+            for (std::size_t k = 0; k < config.getInstances(); ++k)
+                instances.push_back(makeInstance(config, config.getTask() + k));
             if (vm.count("check"))
             {
-                std::cout << config.getProblemName() << ": " << si->getRobotCount() << " robots, " << planners.size()
-                          << " planners, config ok\n";
+                std::cout << config.getProblemName() << ": " << instances.size() << " problem(s) of "
+                          << instances.front().problem.getSpaceInformation()->getRobotCount() << " robots, "
+                          << instances.front().planners.size() << " planners, config ok\n";
                 return static_cast<int>(tools::EXIT_SOLVED);
             }
 
@@ -126,104 +282,32 @@ int main(int argc, char **argv)
             if (error)
                 throw std::invalid_argument("cannot create output folder '" + folder.string() +
                                             "': " + error.message());
-            const std::filesystem::path logPath = folder / (config.getProblemName() + ".log");
+            const auto logPath = [&](const Instance &instance)
+            {
+                return folder / (config.getProblemName() +
+                                 (instances.size() > 1 ? "_" + std::to_string(instance.task) : "") + ".log");
+            };
+            for (const auto &instance : instances)
+                openForWriting(logPath(instance));  // fail now rather than after hours of runs
             const std::filesystem::path csvPath = folder / (config.getProblemName() + ".csv");
-            openForWriting(logPath);  // fail now rather than after hours of runs
             std::ofstream csv = openForWriting(csvPath);
             csv << "scenario,robots,seed,planner,type,workers,success,status";
             for (const auto &column : csvColumns())
                 csv << ',' << column.first;
             csv << '\n';
 
-            ompl::geometric::SimpleSetup setup(si);
-            ob::ScopedState<> start(si), goal(si);
-            const auto pdef = problem.createProblemDefinition();
-            start = pdef->getStartState(0);
-            goal = pdef->getGoal()->as<ob::GoalState>()->getState();
-            setup.setStartAndGoalStates(start, goal);
-            setup.setPlanner(planners.front());  // else SimpleSetup allocates a default planner it never runs
-
-            ompl::tools::Benchmark benchmark(setup, config.getProblemName());
-            benchmark.addExperimentParameter("robots", "INTEGER", std::to_string(si->getRobotCount()));
-            benchmark.addExperimentParameter("resolution", "REAL", std::to_string(si->getResolution()));
-            benchmark.addExperimentParameter("base_seed", "INTEGER", std::to_string(config.getSeed()));
-            benchmark.addExperimentParameter("worker_budget", "INTEGER", std::to_string(config.getWorkers()));
-            for (const auto &planner : planners)
-                benchmark.addPlanner(planner);
-
-            const auto seedOf = [&] { return config.getSeed() + benchmark.getStatus().activeRun; };
-            benchmark.setPreRunEvent(
-                [&](const ob::PlannerPtr &planner)
-                {
-                    if (planner->params().hasParam("seed"))
-                        planner->params().setParam("seed", std::to_string(seedOf()));
-                });
-
-            const SolutionValidator validator(problem);
-            const std::size_t total = planners.size() * config.getRunCount();
-            std::size_t done = 0, invalid = 0;
-            std::map<std::string, std::string> typeOf;
-            for (const auto &entry : config.getPlanners())
-                typeOf[entry.name] = entry.type;
-            benchmark.setPostRunEvent(
-                [&](const ob::PlannerPtr &planner, ompl::tools::Benchmark::RunProperties &run)
-                {
-                    // A run succeeds only with an exact solution that the independent validator accepts.
-                    bool success = false;
-                    std::string verdict = "no exact solution";
-                    if (planner->getProblemDefinition()->hasExactSolution())
-                    {
-                        try
-                        {
-                            const MultiRobotPlan plan = tools::planOf(*planner, si, false);
-                            const ValidationReport report = validator.validate(plan);
-                            success = report.valid;
-                            verdict = report.valid ? "valid" : report.message;
-                            run["makespan INTEGER"] = std::to_string(plan.getMakespan());
-                            run["sum_of_costs INTEGER"] = std::to_string(plan.getSumOfCosts());
-                        }
-                        catch (const std::exception &e)
-                        {
-                            verdict = std::string("validation failed: ") + e.what();
-                        }
-                        if (!success)
-                        {
-                            ++invalid;
-                            std::cerr << "ompl_parc_benchmark: *** INVALID SOLUTION *** planner '" << planner->getName()
-                                      << "' run " << benchmark.getStatus().activeRun << " (seed " << seedOf()
-                                      << "): " << verdict << std::endl;
-                        }
-                    }
-                    run["success BOOLEAN"] = success ? "1" : "0";
-                    run["validation STRING"] = verdict;
-                    run["seed INTEGER"] = std::to_string(seedOf());
-
-                    const auto status =
-                        ob::PlannerStatus(static_cast<ob::PlannerStatus::StatusType>(std::stoi(run["status ENUM"])));
-                    csv << scenario << ',' << si->getRobotCount() << ',' << seedOf() << ',' << planner->getName() << ','
-                        << typeOf[planner->getName()] << ',' << workerBudget(*planner) << ',' << (success ? 1 : 0)
-                        << ',' << status.asString();
-                    for (const auto &column : csvColumns())
-                    {
-                        const auto it = run.find(column.second);
-                        csv << ',' << (it == run.end() ? "" : it->second);
-                    }
-                    csv << std::endl;
-                    std::cerr << "[" << ++done << "/" << total << "] " << config.getProblemName() << " "
-                              << planner->getName() << " seed " << seedOf() << ": "
-                              << (success ? "solved" : status.asString()) << " in " << run["time REAL"] << " s"
-                              << std::endl;
-                });
-
-            ompl::tools::Benchmark::Request request(config.getTimeLimit(), config.getMemLimit(), config.getRunCount());
-            request.displayProgress = false;    // our progress line goes to stderr instead
-            request.saveConsoleOutput = false;  // no console log file next to the results
-            request.simplify = false;           // the planners' own solutions are what is compared
-            benchmark.benchmark(request);
-            if (!benchmark.saveResultsToFile(logPath.string().c_str()))
-                throw std::runtime_error("could not write '" + logPath.string() + "'");
-            std::cerr << "ompl_parc_benchmark: wrote " << logPath.string() << " and " << csvPath.string()
-                      << (invalid ? ", " + std::to_string(invalid) + " INVALID solutions" : std::string()) << std::endl;
+            Tally tally;
+            std::size_t invalid = 0;
+            for (std::size_t k = 0; k < instances.size(); ++k)
+            {
+                std::cerr << "ompl_parc_benchmark: problem " << k + 1 << "/" << instances.size() << ": "
+                          << instances[k].scenario << std::endl;
+                invalid += runInstance(config, instances[k], logPath(instances[k]), csv, tally);
+            }
+            std::cerr << "ompl_parc_benchmark: wrote " << csvPath.string() << " and " << instances.size()
+                      << " log(s)" << (invalid ? ", " + std::to_string(invalid) + " INVALID solutions" : std::string())
+                      << std::endl;
+            printSummary(config, tally, std::cout);
             return static_cast<int>(invalid ? tools::EXIT_FAILED : tools::EXIT_SOLVED);
         });
 }

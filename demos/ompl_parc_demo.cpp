@@ -11,6 +11,7 @@
 #include "ompl_parc/planners/ArcPlannerBase.h"
 #include "ompl_parc/planners/ORPARC.h"
 #include "ompl_parc/planners/PARC.h"
+#include "ompl_parc/util/StopSignal.h"
 #include "ompl_parc/validation/SolutionValidator.h"
 
 #include <ompl/util/RandomNumbers.h>
@@ -116,6 +117,8 @@ int main(int argc, char **argv)
                 static_cast<std::uint32_t>(tools::parseInteger(vm["seed"].as<std::string>(), "--seed", 0, UINT32_MAX)));
 
             const MultiRobotProblem problem = tools::problemFromOptions(vm);
+            if (const std::string coarse = problem.getSpaceInformation()->checkPlanningResolution(); !coarse.empty())
+                throw std::invalid_argument(coarse);
             const auto &si = problem.getSpaceInformation();
             auto pdef = problem.createProblemDefinition();
             const auto params =
@@ -135,7 +138,10 @@ int main(int argc, char **argv)
                       << "planner    " << planner->getName() << "\n";
             tools::ProgressLine progress("planning...");
             const ompl::time::point start = ompl::time::now();
-            const auto status = planner->solve(ompl::base::timedPlannerTerminationCondition(timeLimit));
+            // The scope lets OMPL's own planners (rrtconnect) stop inside a long motion check too.
+            const auto ptc = ompl::base::timedPlannerTerminationCondition(timeLimit);
+            const StopSignal::Scope scope(ptc);
+            const auto status = planner->solve(ptc);
             const double planTime = ompl::time::seconds(ompl::time::now() - start);
             progress.stop();
             std::cout << "status     " << status.asString() << " after " << std::fixed << std::setprecision(3)

@@ -1,5 +1,6 @@
 #include "ompl_parc/planners/ArcPlannerBase.h"
 
+#include "ompl_parc/util/StopSignal.h"
 #include "ompl_parc/planners/subproblem/CompositeRRTConnectSolver.h"
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
 #include "ompl_parc/util/PlannerSeed.h"
@@ -176,6 +177,12 @@ std::optional<ob::PlannerStatus> ompl_parc::ArcPlannerBase::readProblem()
 {
     const ob::State *start = pdef_->getStartStateCount() > 0 ? pdef_->getStartState(0) : nullptr;
     const auto *goal = dynamic_cast<const ob::GoalState *>(pdef_->getGoal().get());
+    if (const std::string coarse = mrsi_->checkPlanningResolution(); !coarse.empty())
+    {
+        statusMessage_ = coarse;
+        OMPL_ERROR("%s: %s", getName().c_str(), coarse.c_str());
+        return ob::PlannerStatus(ob::PlannerStatus::ABORT);
+    }
     if (start == nullptr)
     {
         statusMessage_ = "no start state";
@@ -215,6 +222,7 @@ ob::PlannerStatus ompl_parc::ArcPlannerBase::solve(const ob::PlannerTerminationC
     statusMessage_.clear();
     try
     {
+        const StopSignal::Scope scope(ptc);
         return solveStages(ptc);
     }
     catch (const std::exception &e)

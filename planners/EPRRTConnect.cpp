@@ -1,5 +1,6 @@
 #include "ompl_parc/planners/EPRRTConnect.h"
 
+#include "ompl_parc/util/StopSignal.h"
 #include "ompl_parc/util/PlannerSeed.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
 
@@ -191,6 +192,7 @@ ob::PlannerStatus ompl_parc::EPRRTConnect::solve(const ob::PlannerTerminationCon
             {
                 try
                 {
+                    const StopSignal::Scope scope(ptc);
                     work(w, seed, ptc);
                 }
                 catch (...)

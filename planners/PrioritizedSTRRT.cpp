@@ -1,5 +1,6 @@
 #include "ompl_parc/planners/PrioritizedSTRRT.h"
 
+#include "ompl_parc/util/StopSignal.h"
 #include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/util/PlannerSeed.h"
 
@@ -76,6 +77,11 @@ ob::PlannerStatus ompl_parc::PrioritizedSTRRT::solve(const ob::PlannerTerminatio
         OMPL_ERROR("%s: the goal must be a GoalState (one configuration per robot)", getName().c_str());
         return ob::PlannerStatus::UNRECOGNIZED_GOAL_TYPE;
     }
+    if (const std::string coarse = mrsi_->checkPlanningResolution(); !coarse.empty())
+    {
+        OMPL_ERROR("%s: %s", getName().c_str(), coarse.c_str());
+        return ob::PlannerStatus::ABORT;
+    }
     if (pdef_->getStartStateCount() == 0)
     {
         OMPL_ERROR("%s: no start state", getName().c_str());
@@ -105,6 +111,7 @@ ob::PlannerStatus ompl_parc::PrioritizedSTRRT::solve(const ob::PlannerTerminatio
     }
     lastSeed_ = static_cast<unsigned int>(seedOrDraw(seed_));
     Patch patch;
+    const StopSignal::Scope scope(ptc);
     solved_ = PrioritizedSTRRTSolver(settings_).solve(*mrsi_, whole, ptc, lastSeed_, patch);
     if (!solved_)
         return ob::PlannerStatus::TIMEOUT;

@@ -4,6 +4,7 @@
 #include "ompl_parc/planners/ARC.h"
 #include "ompl_parc/planners/ORPARC.h"
 #include "ompl_parc/planners/PARC.h"
+#include "ompl_parc/scenarios/PandaCage.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 #include "ompl_parc/validation/SolutionValidator.h"
 
@@ -268,4 +269,46 @@ TEST(OrParc, InconsistentWorkerBudgetsAreClearErrorsAndTimeoutIsPrompt)
     const auto start = ompl::time::now();
     EXPECT_EQ(orparc.solve(ob::timedPlannerTerminationCondition(0.03)), ob::PlannerStatus::TIMEOUT);
     EXPECT_LT(ompl::time::seconds(ompl::time::now() - start), 0.03 + test::promptReturn());
+}
+
+TEST(Parc, SixteenWorkersOnPandaCage16StopPromptly)
+{
+    // Issue 15: every worker, solver call and motion check notices the stop, also when 16 workers share a small
+    // machine's cores (the benchmark ompl_parc_bench_stop measures the lateness; this bound is generous).
+    const auto problem = scenarios::createPandaCage(16, 3);
+    for (double limit : {0.3, 1.0})
+    {
+        PARC parc(problem.getSpaceInformation());
+        ASSERT_TRUE(parc.params().setParam("profile", "panda"));
+        parc.setWorkers(16);
+        parc.setSeed(1);
+        parc.setProblemDefinition(problem.createProblemDefinition());
+        const auto start = ompl::time::now();
+        const auto status = parc.solve(ob::timedPlannerTerminationCondition(limit));
+        EXPECT_LT(ompl::time::seconds(ompl::time::now() - start), limit + test::promptReturn());
+        if (status == ob::PlannerStatus::EXACT_SOLUTION)
+            EXPECT_TRUE(SolutionValidator(problem).validate(parc.getPlan()).valid);
+        else
+            EXPECT_EQ(status, ob::PlannerStatus::TIMEOUT);
+    }
+}
+
+TEST(Parc, StopsPromptlyAtResolution1e8)
+{
+    // At 1e8 timesteps per unit one motion check spans a billion states: motion checks poll the stop too.
+    const auto swap = test::twoDiscs({-5, 0}, {5, 0}, {5, 0}, {-5, 0}, true, 1e8);
+    for (unsigned int workers : {1u, 2u})
+    {
+        PARC parc(swap.getSpaceInformation());
+        parc.setWorkers(workers);
+        parc.setSeed(1);
+        parc.setProblemDefinition(swap.createProblemDefinition());
+        const auto start = ompl::time::now();
+        const auto status = parc.solve(ob::timedPlannerTerminationCondition(0.3));
+        EXPECT_LT(ompl::time::seconds(ompl::time::now() - start), 0.3 + test::promptReturn());
+        if (status == ob::PlannerStatus::EXACT_SOLUTION)  // a lucky draw (the time caps depend on the machine)
+            EXPECT_TRUE(SolutionValidator(swap).validate(parc.getPlan()).valid);
+        else
+            EXPECT_EQ(status, ob::PlannerStatus::TIMEOUT);
+    }
 }

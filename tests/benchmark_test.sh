@@ -77,6 +77,33 @@ for broken in 's|^file = .*|file = missing.json|' 's|^file = .*|file = doorway_s
     fi
 done
 
+# A generated family over several instances: one log per instance, one CSV, and the success-rate table.
+cat >"$tmp/family.cfg" <<'CFG'
+[problem]
+name = rings
+scenario = ring
+robots = 6
+task = 3
+instances = 2
+
+[benchmark]
+time_limit = 20
+mem_limit = 4096
+run_count = 1
+output = out
+
+[planner]
+arc =
+arc.name = ARC
+CFG
+if ! "$bin/ompl_parc_benchmark" "$tmp/family.cfg" >"$tmp/table" 2>"$tmp/err"; then
+    fail "family benchmark exited non-zero"; cat "$tmp/err"
+fi
+[ -f "$tmp/out/rings_3.log" ] && [ -f "$tmp/out/rings_4.log" ] || fail "no log per instance (rings_3.log, rings_4.log)"
+grep -q '^ring_6_3,6,1,ARC,arc,1,1,' "$tmp/out/rings.csv" || fail "CSV lacks the solved run of instance 3"
+grep -q '^ring_6_4,6,1,ARC,arc,1,1,' "$tmp/out/rings.csv" || fail "CSV lacks the solved run of instance 4"
+grep -q '^| ARC | 2/2 | ' "$tmp/table" || { fail "no success-rate table"; cat "$tmp/table"; }
+
 # Every shipped suite config is valid (problem, planners and parameters, worker budgets), checked without a run.
 for cfg in "$(dirname "$0")"/../demos/benchmarks/*/*.cfg; do
     "$bin/ompl_parc_benchmark" --check "$cfg" >/dev/null 2>"$tmp/err" || { fail "$cfg: $(cat "$tmp/err")"; }

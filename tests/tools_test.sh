@@ -100,6 +100,10 @@ edit "$tmp/wall.json" 'doc["robots"][0]["start"] = [0, 4]'
 expect 2 "start of robot 'west_a' is" "$bin/ompl_parc_validate" --scenario-file "$tmp/wall.json" "$tmp/door.json"
 edit "$tmp/urdf.json" 'doc["robots"][0] = {"name": "a", "kind": "urdf_arm", "urdf_file": "/nonexistent/arm.urdf", "base_link": "b", "tip_link": "t", "start": [0], "goal": [0]}'
 expect 2 "nonexistent/arm.urdf" "$bin/ompl_parc_demo" --scenario-file "$tmp/urdf.json"
+# Issue 15: at resolution 1e-9 a timestep carried discs through each other and the planner claimed a solution.
+edit "$tmp/coarse.json" 'doc["resolution"] = 1e-9'
+expect 2 "resolution 1e-09 is too coarse to plan robot 'west_a'.*at least 2$" \
+    "$bin/ompl_parc_demo" --scenario-file "$tmp/coarse.json"
 head -c 200 "$scenarios/doorway_swap.json" >"$tmp/cut.json"
 expect 2 "not valid JSON at line" "$bin/ompl_parc_demo" --scenario-file "$tmp/cut.json"
 # Bad input is reported on exactly one line.
@@ -128,6 +132,14 @@ r['urdf'] = re.sub(r'<limit[^>]*/>', '', open('$scenarios/../../ompl_parc/robots
 expect 2 "malformed URDF: Joint \[panda_joint1\] is of type REVOLUTE but it does not specify limits" \
     "$bin/ompl_parc_demo" --scenario-file "$tmp/no_limit.json"
 expect 0 "^1$" bash -c "'$bin/ompl_parc_demo' --scenario-file '$tmp/no_limit.json' 2>&1 | wc -l"
+
+# Generated problem families as scenario files; each reads back and plans.
+expect 0 "rooms_6_2.json" "$bin/ompl_parc_generate" --scenario rooms --robots 6 --task 1 --count 2 --out-dir "$tmp/rooms"
+expect 0 "validated  yes" "$bin/ompl_parc_demo" --scenario-file "$tmp/rooms/rooms_6_1.json"
+expect 2 "unknown scenario 'hall'" "$bin/ompl_parc_generate" --scenario hall --out-dir "$tmp/rooms"
+expect 2 "count must be a whole number from 1 to 100000 (got '0')" "$bin/ompl_parc_generate" --scenario ring \
+    --count 0 --out-dir "$tmp/rooms"
+expect 2 "no --out-dir" "$bin/ompl_parc_generate" --scenario ring
 
 # The Panda Cage picture (if Debian's matplotlib is there): geometry file -> PNG.
 if /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then

@@ -1,6 +1,7 @@
 #include "ompl_parc/arc/BatchDetector.h"
 
 #include "ompl_parc/parallel/StageClock.h"
+#include "ompl_parc/util/StopSignal.h"
 
 #include <ompl/util/Exception.h>
 
@@ -54,7 +55,10 @@ ompl_parc::DetectedBatch ompl_parc::BatchDetector::detect(const MultiRobotPlan &
         const std::size_t to = std::min<std::size_t>(from + horizon_, makespan + 1);
         const auto cpu = pool_.run(
             [&](unsigned int worker)
-            { found[worker] = detector_.scan(plan, live_[worker], from, to, earliestOnly, skip, &resume[worker]); });
+            {
+                const StopSignal::Scope scope(ptc);
+                found[worker] = detector_.scan(plan, live_[worker], from, to, earliestOnly, skip, &resume[worker]);
+            });
         // The coordinator merges the candidates in temporal order and grows the batch.
         const double mergeStart = StageClock::threadCpu();
         std::vector<Conflict> candidates;

@@ -147,8 +147,13 @@ std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRo
         {
             // Two discs: straight to the pair's first conflict or its end, from the pieces (however far past
             // \e to: the frontier stops at the conflict, which a later window reports).
-            const auto contact = DiscPairScan(*discs_[i], plan.getPath(i), *discs_[j], plan.getPath(j), discA, discB)
-                                     .firstContact(f, last);
+            DiscPairScan scan(*discs_[i], plan.getPath(i), *discs_[j], plan.getPath(j), discA, discB);
+            const auto contact = scan.firstContact(f, last);
+            if (const auto stopped = scan.getStoppedAt())
+            {
+                frontier_[p] = *stopped;  // clear before it; the rest waits for a later scan (the planning stopped)
+                continue;
+            }
             frontier_[p] = contact ? *contact : last + 1;
             knownConflict_[p] = contact.has_value();
             if (contact && *contact < to)

@@ -1,5 +1,6 @@
 #include "ompl_parc/arc/ConflictResolver.h"
 
+#include "ompl_parc/util/StopSignal.h"
 #include "ompl_parc/collision/CapsuleCollision.h"
 #include "ompl_parc/collision/CollisionBody.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
@@ -97,7 +98,7 @@ void ompl_parc::ConflictResolver::fillContext(const MultiRobotPlan &plan, Subpro
 {
     sub.others.clear();
     sub.otherPaths.clear();
-    if (!usesContext_)
+    if (!usesContext_ || sub.windowEnd - sub.windowStart >= MAX_CONTEXT_TIMESTEPS)
         return;
     // A robot moves at most a quarter unit between two sampled bodies (vMax 1): boxes grow by that and more.
     constexpr double MARGIN = 0.5;
@@ -174,9 +175,10 @@ ompl_parc::Subproblem ompl_parc::ConflictResolver::makeSubproblem(const MultiRob
     sub.windowEnd = std::min(timestep + h, latest);
     // Endpoints first: widen an invalid side until the team is clear there (always true at 0 and at the end).
     const std::size_t step = std::max(1u, settings_.endpointStep);
-    while (sub.windowStart > 0 && !teamClear(plan, team, sub.windowStart))
+    // (Millions of steps at a resolution far above the usual: the search stops with the planning.)
+    while (sub.windowStart > 0 && !teamClear(plan, team, sub.windowStart) && !StopSignal::raised())
         sub.windowStart = sub.windowStart > step ? sub.windowStart - step : 0;
-    while (sub.windowEnd < latest && !teamClear(plan, team, sub.windowEnd))
+    while (sub.windowEnd < latest && !teamClear(plan, team, sub.windowEnd) && !StopSignal::raised())
         sub.windowEnd = std::min(sub.windowEnd + step, latest);
     fillEndpoints(plan, sub);
     fillBounds(plan, sub);
@@ -236,6 +238,7 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(const Mult
             const auto capped = ob::plannerOrTerminationCondition(
                 ptc, ob::PlannerTerminationCondition([start, cap]
                                                      { return ompl::time::seconds(ompl::time::now() - start) > cap; }));
+            const StopSignal::Scope scope(capped);
             const bool solved = solver->solve(si_, sub, capped, mixSeed(seed, t.calls), repair.patch);
             t.longestCall = std::max(t.longestCall, ompl::time::seconds(ompl::time::now() - start));
             if (solved)

@@ -48,6 +48,9 @@ namespace ompl_parc
     class ConflictResolver
     {
       public:
+        /** \brief The longest window that gets a context: a solver keeps bodies of the context per timestep. */
+        static constexpr std::size_t MAX_CONTEXT_TIMESTEPS = std::size_t{1} << 16;
+
         /** \brief The least time cap of one solver call, in seconds. */
         static constexpr double MIN_CALL_SECONDS = 0.05;
 
@@ -77,7 +80,8 @@ namespace ompl_parc
         /** \brief Subproblem::others and otherPaths, when a solver of the hierarchy uses them: every robot
             outside the team whose workspace box over the window (bodies every quarter unit of time) meets the
             team's, except one that touches a team robot at the window's start or end (part of another
-            conflict, which no patch of this team can avoid). */
+            conflict, which no patch of this team can avoid); none for a window of MAX_CONTEXT_TIMESTEPS or
+            more. */
         void fillContext(const MultiRobotPlan &plan, Subproblem &sub) const;
 
         const MultiRobotSpaceInformation &si_;

@@ -1,6 +1,7 @@
 #include "ompl_parc/arc/DiscPairScan.h"
 
 #include "ompl_parc/collision/CapsuleCollision.h"
+#include "ompl_parc/util/StopSignal.h"
 
 #include <algorithm>
 #include <cmath>
@@ -58,6 +59,7 @@ bool ompl_parc::DiscPairScan::collidesAt(std::size_t t)
 
 std::optional<std::size_t> ompl_parc::DiscPairScan::firstContact(std::size_t from, std::size_t last)
 {
+    stoppedAt_.reset();
     const double radiusSum = a_.getRadius() + b_.getRadius();
     Motion ma{}, mb{};
     for (std::size_t t = from; t <= last;)
@@ -92,8 +94,15 @@ std::optional<std::size_t> ompl_parc::DiscPairScan::firstContact(std::size_t fro
                     hi = static_cast<std::size_t>(std::ceil(u + half));
             }
             for (std::size_t s = lo; s <= hi; ++s)
+            {
+                if ((s - lo) % StopSignal::POLL_INTERVAL == StopSignal::POLL_INTERVAL - 1 && StopSignal::raised())
+                {
+                    stoppedAt_ = t + s;
+                    return std::nullopt;
+                }
                 if (collidesAt(t + s))
                     return t + s;
+            }
         }
         if (end == last)
             break;

@@ -26,8 +26,17 @@ namespace ompl_parc
         DiscPairScan(const DiscRobot &a, const TimedPath &pathA, const DiscRobot &b, const TimedPath &pathB,
                      CollisionBody &bodyA, CollisionBody &bodyB);
 
-        /** \brief The first timestep in [\e from, \e last] at which the discs collide, if any. */
+        /** \brief The first timestep in [\e from, \e last] at which the discs collide, if any. The exact checks
+            poll StopSignal (a stretch where the discs stay close may span millions of timesteps at a fine
+            resolution): when the planning stops, none is returned and getStoppedAt() says where. */
         std::optional<std::size_t> firstContact(std::size_t from, std::size_t last);
+
+        /** \brief After a firstContact() that stopped early: the first timestep it did not check (the ones
+            before it are clear); none after a complete one. */
+        std::optional<std::size_t> getStoppedAt() const
+        {
+            return stoppedAt_;
+        }
 
       private:
         /** \brief A disc's straight motion: position (exactly the path's) at timestep \e time, velocity per
@@ -48,6 +57,7 @@ namespace ompl_parc
         CollisionBody &bodyA_, &bodyB_;
         /** \brief One reader per path, for the motions and the exact checks alike: both only move forward. */
         TimedPath::Cursor cursorA_, cursorB_;
+        std::optional<std::size_t> stoppedAt_;
     };
 }  // namespace ompl_parc
 

@@ -8,7 +8,9 @@
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/util/Exception.h>
 
+#include <algorithm>
 #include <set>
+#include <sstream>
 
 namespace ob = ompl::base;
 
@@ -130,4 +132,29 @@ ompl_parc::MultiRobotSpaceInformationPtr ompl_parc::MultiRobotSpaceInformation::
                               "needs an ompl_parc::MultiRobotSpaceInformation (a robot team over a "
                               "CompositeStateSpace), got a plain SpaceInformation");
     return mrsi;
+}
+
+std::string ompl_parc::MultiRobotSpaceInformation::checkPlanningResolution() const
+{
+    CollisionBody body;
+    for (const auto &robot : robots_)
+    {
+        const auto &bounds = robot->getBounds();
+        std::vector<double> centre(robot->getDimension());
+        for (std::size_t d = 0; d < centre.size(); ++d)
+            centre[d] = 0.5 * (bounds.low[d] + bounds.high[d]);
+        robot->computeBody(centre.data(), body);
+        if (body.size() == 0)
+            continue;
+        const double thinnest = *std::min_element(body.radius_.begin(), body.radius_.end());
+        if (resolution_ * thinnest < 1.)
+        {
+            std::ostringstream out;
+            out << "resolution " << resolution_ << " is too coarse to plan robot '" << robot->getName()
+                << "': one timestep (1/resolution) must not exceed its thinnest part (radius " << thinnest
+                << "), so the resolution must be at least " << 1. / thinnest;
+            return out.str();
+        }
+    }
+    return "";
 }

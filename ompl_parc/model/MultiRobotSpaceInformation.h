@@ -47,6 +47,13 @@ namespace ompl_parc
         /** \brief Timesteps per unit of distance; one timestep moves a robot at most 1/resolution. */
         double getResolution() const { return resolution_; }
 
+        /** \brief Empty if the resolution is fine enough to plan with; otherwise why not. Conflicts are
+            found at timesteps, so one timestep of motion must not carry a robot past another: a robot's
+            thinnest part (its smallest capsule radius r, at the centre of its bounds) must be at least the
+            1/resolution a timestep moves it, i.e. resolution >= 1/r for every robot (Mobile discs: 2; the
+            paper uses 128). Coarser plans are still read and validated, but planners refuse them. */
+        std::string checkPlanningResolution() const;
+
         /** \brief The configuration values of robot \e i inside composite state \e state. */
         const double *getRobotValues(const ompl::base::State *state, std::size_t i) const;
         double *getRobotValues(ompl::base::State *state, std::size_t i) const;

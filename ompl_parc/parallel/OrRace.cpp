@@ -1,5 +1,6 @@
 #include "ompl_parc/parallel/OrRace.h"
 
+#include "ompl_parc/util/StopSignal.h"
 #include "ompl_parc/util/PlannerSeed.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
 
@@ -24,6 +25,7 @@ namespace
         ob::PlannerStatus solve(const ob::PlannerTerminationCondition &ptc) override
         {
             status_ = ob::PlannerStatus::CRASH;
+            const ompl_parc::StopSignal::Scope scope(ptc);
             status_ = racer_->solve(ptc);
             return status_;
         }

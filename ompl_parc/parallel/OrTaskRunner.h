@@ -3,6 +3,7 @@
 
 #include "ompl_parc/parallel/WorkerPool.h"
 
+#include "ompl_parc/util/StopSignal.h"
 #include <ompl/base/PlannerTerminationCondition.h>
 
 #include <atomic>
@@ -87,7 +88,11 @@ namespace ompl_parc
                         }
                         const ompl::base::PlannerTerminationCondition stop(
                             [&ptc, &solved, task, this] { return solved[task].load() || pool_.aborted() || ptc(); });
-                        std::optional<Result> result = attempt(task, index, stop);
+                        std::optional<Result> result;
+                        {
+                            const StopSignal::Scope scope(stop);
+                            result = attempt(task, index, stop);
+                        }
                         std::lock_guard<std::mutex> lock(mutex);
                         --running[task];
                         if (result && !solved[task])

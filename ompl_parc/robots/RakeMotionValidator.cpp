@@ -1,5 +1,6 @@
 #include "ompl_parc/robots/RakeMotionValidator.h"
 
+#include "ompl_parc/util/StopSignal.h"
 #include <vector>
 
 ompl_parc::RakeMotionValidator::RakeMotionValidator(ompl::base::SpaceInformation *si, BatchCheck check,
@@ -15,9 +16,14 @@ bool ompl_parc::RakeMotionValidator::rake(unsigned int n, Check check)
     unsigned int stride = 1;
     while (2 * stride < n)
         stride *= 2;
+    // A motion given up on (the planning stopped) counts as invalid: never a wrong "valid". Polled on entry
+    // too, so that many short checks (a path simplifier's) also end once the planning stops.
+    if (StopSignal::raised())
+        return false;
+    unsigned int polls = 0;
     for (; stride >= 1; stride /= 2)
         for (unsigned int j = stride; j < n; j += 2 * stride)
-            if (!check(j))
+            if (!check(j) || (++polls % StopSignal::POLL_INTERVAL == 0 && StopSignal::raised()))
                 return false;
     return true;
 }

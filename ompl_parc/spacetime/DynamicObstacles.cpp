@@ -20,6 +20,9 @@ ompl_parc::DynamicObstacles::DynamicObstacles(RobotPtr robot, double resolution)
 
 void ompl_parc::DynamicObstacles::addPath(const Robot &other, const TimedPath &path)
 {
+    if (!fits(path))
+        throw ompl::Exception("DynamicObstacles", "a path of " + std::to_string(path.getArrival()) +
+                                                      " timesteps is too long to keep its bodies");
     if (path.empty() || path.getDimension() != other.getDimension())
         throw ompl::Exception("DynamicObstacles",
                               "path of robot '" + other.getName() + "' is empty or not of its dimension");

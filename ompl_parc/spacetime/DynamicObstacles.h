@@ -26,8 +26,18 @@ namespace ompl_parc
         const RobotPtr &getRobot() const { return robot_; }
         double getResolution() const { return resolution_; }
 
-        /** \brief Add robot \e other following \e path (not empty; its bodies are computed for timesteps
-            0..arrival). */
+        /** \brief The most timesteps of a path whose bodies are kept (a 2^22-timestep path holds hundreds of
+            megabytes of bodies; at resolution 1e8 one unit of motion is 1e8 timesteps). */
+        static constexpr std::size_t MAX_TIMESTEPS = std::size_t{1} << 22;
+
+        /** \brief Whether addPath() takes \e path (its arrival is below MAX_TIMESTEPS). */
+        static bool fits(const TimedPath &path)
+        {
+            return path.getArrival() < MAX_TIMESTEPS;
+        }
+
+        /** \brief Add robot \e other following \e path (not empty, fits(); its bodies are computed for
+            timesteps 0..arrival). Throws ompl::Exception for a path that does not fit. */
         void addPath(const Robot &other, const TimedPath &path);
 
         std::size_t getPathCount() const { return bodies_.size(); }

@@ -108,7 +108,11 @@ bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &
             return false;
         auto obstacles = std::make_shared<DynamicObstacles>(team[k], si.getResolution());
         for (std::size_t j : planned)
+        {
+            if (!DynamicObstacles::fits(paths[j]))
+                return false;  // too many timesteps to plan around (a resolution far above the usual)
             obstacles->addPath(*team[j], paths[j]);
+        }
         if (settings_.avoidOthers)
             for (std::size_t o = 0; o < subproblem.others.size(); ++o)
                 obstacles->addPath(*si.getRobot(subproblem.others[o]), subproblem.otherPaths[o]);
