@@ -116,7 +116,8 @@ void ompl_parc::tools::addProblemOptions(po::options_description &options)
     options.add_options()("scenario", po::value<std::string>()->default_value("mobile_cross"),
                           ("built-in scenario: " + names).c_str())(
         "robots", po::value<std::string>()->default_value("4"), "number of robots of the built-in scenario")(
-        "task", po::value<std::string>()->default_value("0"), "task of the built-in scenario (panda_cage: 0 to 4; a generated family: the instance)")(
+        "task", po::value<std::string>()->default_value("0"),
+        "task of the built-in scenario (panda_cage: 0 to 4; a generated family: the instance)")(
         "scenario-file", po::value<std::string>(), "read the problem from this scenario file (JSON) instead");
 }
 

@@ -85,19 +85,21 @@ namespace
     /** \brief The problem of \e task with its planners, checked: every input error shows before any run. */
     Instance makeInstance(const tools::BenchmarkConfig &config, std::size_t task)
     {
-        Instance instance{config.getScenarioFile().empty() ?
-                              scenarios::createScenario(config.getScenario(), config.getRobots(),
-                                                        config.getResolution(), task) :
-                              ScenarioFile::read(config.getScenarioFile()),
-                          config.getScenario(), task, {}};
+        Instance instance{
+            config.getScenarioFile().empty()
+                ? scenarios::createScenario(config.getScenario(), config.getRobots(), config.getResolution(), task)
+                : ScenarioFile::read(config.getScenarioFile()),
+            config.getScenario(),
+            task,
+            {}};
         const MultiRobotProblem &problem = instance.problem;
         if (!config.getScenarioFile().empty())
-            instance.scenario = problem.getName().empty() ?
-                                    std::filesystem::path(config.getScenarioFile()).stem().string() :
-                                    problem.getName();
+            instance.scenario = problem.getName().empty()
+                                    ? std::filesystem::path(config.getScenarioFile()).stem().string()
+                                    : problem.getName();
         else if (config.getInstances() > 1 || task > 0)
-            instance.scenario = problem.getName().empty() ? config.getScenario() + "_" + std::to_string(task) :
-                                                            problem.getName();
+            instance.scenario =
+                problem.getName().empty() ? config.getScenario() + "_" + std::to_string(task) : problem.getName();
         for (const std::string &reason :
              {problem.checkEndpoints(), problem.getSpaceInformation()->checkPlanningResolution()})
             if (!reason.empty())
@@ -107,9 +109,9 @@ namespace
             auto planner = tools::createPlanner(entry.type, problem.getSpaceInformation(), entry.params);
             planner->setName(entry.name);
             if (const unsigned int budget = workerBudget(*planner); budget > config.getWorkers())
-                throw std::invalid_argument("planner '" + entry.name + "' needs " + std::to_string(budget) +
-                                            " workers but [benchmark] workers = " +
-                                            std::to_string(config.getWorkers()));
+                throw std::invalid_argument(
+                    "planner '" + entry.name + "' needs " + std::to_string(budget) +
+                    " workers but [benchmark] workers = " + std::to_string(config.getWorkers()));
             if (!planner->params().hasParam("seed") && task == config.getTask())
                 std::cerr << "ompl_parc_benchmark: planner '" << entry.name
                           << "' has no seed parameter: its runs use OMPL's global random sequence\n";
@@ -228,9 +230,10 @@ namespace
                     csv << ',' << (it == run.end() ? "" : it->second);
                 }
                 csv << std::endl;
-                std::cerr << "[" << ++done << "/" << total << "] " << config.getProblemName() << " " << planner->getName()
-                          << " seed " << seedOf() << ": " << (success ? "solved" : status.asString()) << " in "
-                          << run["time REAL"] << " s" << std::endl;
+                std::cerr << "[" << ++done << "/" << total << "] " << config.getProblemName() << " "
+                          << planner->getName() << " seed " << seedOf() << ": "
+                          << (success ? "solved" : status.asString()) << " in " << run["time REAL"] << " s"
+                          << std::endl;
             });
 
         ompl::tools::Benchmark::Request request(config.getTimeLimit(), config.getMemLimit(), config.getRunCount());
@@ -304,9 +307,8 @@ int main(int argc, char **argv)
                           << instances[k].scenario << std::endl;
                 invalid += runInstance(config, instances[k], logPath(instances[k]), csv, tally);
             }
-            std::cerr << "ompl_parc_benchmark: wrote " << csvPath.string() << " and " << instances.size()
-                      << " log(s)" << (invalid ? ", " + std::to_string(invalid) + " INVALID solutions" : std::string())
-                      << std::endl;
+            std::cerr << "ompl_parc_benchmark: wrote " << csvPath.string() << " and " << instances.size() << " log(s)"
+                      << (invalid ? ", " + std::to_string(invalid) + " INVALID solutions" : std::string()) << std::endl;
             printSummary(config, tally, std::cout);
             return static_cast<int>(invalid ? tools::EXIT_FAILED : tools::EXIT_SOLVED);
         });

@@ -48,7 +48,8 @@ int main(int argc, char **argv)
             {
                 const MultiRobotProblem problem =
                     scenarios::createScenario(vm["scenario"].as<std::string>(), robots, 128., task);
-                const std::string name = problem.getName().empty() ? "problem_" + std::to_string(task) : problem.getName();
+                const std::string name =
+                    problem.getName().empty() ? "problem_" + std::to_string(task) : problem.getName();
                 const std::string path = (folder / (name + ".json")).string();
                 ScenarioFile::write(path, problem);
                 if (ScenarioFile::toJson(ScenarioFile::read(path)) != ScenarioFile::toJson(problem))

@@ -1,9 +1,9 @@
 #include "ompl_parc/planners/ArcPlannerBase.h"
 
-#include "ompl_parc/util/StopSignal.h"
 #include "ompl_parc/planners/subproblem/CompositeRRTConnectSolver.h"
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
 #include "ompl_parc/util/PlannerSeed.h"
+#include "ompl_parc/util/StopSignal.h"
 
 #include <ompl/base/goals/GoalState.h>
 #include <ompl/util/Exception.h>

@@ -1,8 +1,8 @@
 #include "ompl_parc/planners/EPRRTConnect.h"
 
-#include "ompl_parc/util/StopSignal.h"
 #include "ompl_parc/util/PlannerSeed.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
+#include "ompl_parc/util/StopSignal.h"
 
 #include <ompl/base/goals/GoalSampleableRegion.h>
 #include <ompl/datastructures/NearestNeighborsGNATNoThreadSafety.h>

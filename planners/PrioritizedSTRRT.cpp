@@ -1,8 +1,8 @@
 #include "ompl_parc/planners/PrioritizedSTRRT.h"
 
-#include "ompl_parc/util/StopSignal.h"
 #include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/util/PlannerSeed.h"
+#include "ompl_parc/util/StopSignal.h"
 
 #include <ompl/base/goals/GoalState.h>
 #include <ompl/util/Exception.h>

@@ -226,9 +226,7 @@ TEST(ConflictDetector, ScanOfAPairSubsetReportsAllConflictsAtTheFirstConflicting
     // Two head-on pairs meeting at the same time: a scan of all pairs returns both, in pair order.
     const auto problem = scenarios::createMobileCross(4);
     const auto &si = *problem.getSpaceInformation();
-    MultiRobotPlan plan(si);
-    for (std::size_t r = 0; r < 4; ++r)
-        plan.setRobotPath(r, test::straightLine(problem.getStart(r), problem.getGoal(r), 128.));
+    MultiRobotPlan plan = test::straightLinePlan(problem);
     ConflictDetector detector(si);
     std::vector<std::size_t> all(detector.getPairCount());
     for (std::size_t p = 0; p < all.size(); ++p)
@@ -270,9 +268,7 @@ TEST(ConflictDetector, ALaterScanNeverResumesAPairPastItsKnownConflict)
     // horizon, the conflict deferred) must not mark the stretch before it conflict-free.
     const auto problem = scenarios::createMobileCross(4);
     const auto &si = *problem.getSpaceInformation();
-    MultiRobotPlan plan(si);
-    for (std::size_t r = 0; r < 4; ++r)
-        plan.setRobotPath(r, test::straightLine(problem.getStart(r), problem.getGoal(r), 128.));
+    MultiRobotPlan plan = test::straightLinePlan(problem);
     ConflictDetector detector(si);
     const std::vector<std::size_t> pair = {detector.pairIndex(0, 1)};
     const auto first = detector.scan(plan, pair, 0, 1400, false);

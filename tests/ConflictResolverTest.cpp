@@ -34,12 +34,7 @@ namespace
     struct HeadOn : testing::Test
     {
         MultiRobotProblem problem = scenarios::createMobileCross(4);
-        MultiRobotPlan plan{*problem.getSpaceInformation()};
-        void SetUp() override
-        {
-            for (std::size_t r = 0; r < 4; ++r)
-                plan.setRobotPath(r, test::straightLine(problem.getStart(r), problem.getGoal(r), 128.));
-        }
+        MultiRobotPlan plan = test::straightLinePlan(problem);
     };
 }  // namespace
 
@@ -114,8 +109,8 @@ TEST_F(HeadOn, FailedWindowsGrowUntilTheGlobalProblem)
     for (const auto &s : asked)
         if (s.bounds.empty())
             globalCaps.push_back(s.sampleCap);
-    EXPECT_EQ(globalCaps, (std::vector<unsigned int>{settings.sampleCap, 2 * settings.sampleCap,
-                                                     4 * settings.sampleCap}));
+    EXPECT_EQ(globalCaps,
+              (std::vector<unsigned int>{settings.sampleCap, 2 * settings.sampleCap, 4 * settings.sampleCap}));
 }
 
 namespace
@@ -163,13 +158,12 @@ TEST(ConflictResolverContext, RobotsNearTheWindowAreTheContext)
     // Mobile Circle 4 with straight lines: all four discs cross the centre at the same time.
     const MultiRobotProblem problem = scenarios::createMobileCircle(4);
     const auto &si = *problem.getSpaceInformation();
-    MultiRobotPlan plan(si);
-    for (std::size_t r = 0; r < 4; ++r)
-        plan.setRobotPath(r, test::straightLine(problem.getStart(r), problem.getGoal(r), 128.));
+    const MultiRobotPlan plan = test::straightLinePlan(problem);
     ArcSettings settings;
     settings.window = 200;
     const std::size_t t = plan.getArrival(0) / 2 - 100;  // before the discs touch: both window ends are clear
-    const auto sub = ConflictResolver(si, settings, {std::make_shared<ContextSolver>()}).makeSubproblem(plan, {0, 2}, t, 0);
+    const auto sub =
+        ConflictResolver(si, settings, {std::make_shared<ContextSolver>()}).makeSubproblem(plan, {0, 2}, t, 0);
     ASSERT_EQ(sub.others, (std::vector<std::size_t>{1, 3}));
     std::vector<double> q(2), expected(2);
     for (std::size_t k = 0; k < 2; ++k)
@@ -185,9 +179,7 @@ TEST(ConflictResolverContext, RobotsNearTheWindowAreTheContext)
                     .others.empty());
     // Far robots are not the context: Mobile Cross 4's rows are 5 apart.
     const MultiRobotProblem cross = scenarios::createMobileCross(4);
-    MultiRobotPlan rows(*cross.getSpaceInformation());
-    for (std::size_t r = 0; r < 4; ++r)
-        rows.setRobotPath(r, test::straightLine(cross.getStart(r), cross.getGoal(r), 128.));
+    const MultiRobotPlan rows = test::straightLinePlan(cross);
     EXPECT_TRUE(ConflictResolver(*cross.getSpaceInformation(), settings, {std::make_shared<ContextSolver>()})
                     .makeSubproblem(rows, {0, 1}, 1280, 0)
                     .others.empty());

@@ -43,8 +43,11 @@ TEST(ProblemFamilies, ArcSolvesAnInstanceOfEachFamily)
 {
     // One instance per family that needs repairs, solved by ARC with its default settings and re-checked by
     // the validator (the success rates over many instances are the benchmark's business: README).
-    const std::vector<std::pair<std::string, std::string>> cases = {
-        {"rooms", "mobile"}, {"crossing", "mobile"}, {"ring", "mobile"}, {"field", "mobile"}, {"planar_cell", "planar"}};
+    const std::vector<std::pair<std::string, std::string>> cases = {{"rooms", "mobile"},
+                                                                    {"crossing", "mobile"},
+                                                                    {"ring", "mobile"},
+                                                                    {"field", "mobile"},
+                                                                    {"planar_cell", "planar"}};
     for (const auto &[family, profile] : cases)
     {
         SCOPED_TRACE(family);

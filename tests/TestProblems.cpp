@@ -139,3 +139,12 @@ void ompl_parc::test::followFrom(MultiRobotPlan &plan, std::size_t a, std::size_
     }
     plan.setRobotPath(a, path);
 }
+
+ompl_parc::MultiRobotPlan ompl_parc::test::straightLinePlan(const MultiRobotProblem &problem)
+{
+    const auto &si = *problem.getSpaceInformation();
+    MultiRobotPlan plan(si);
+    for (std::size_t r = 0; r < si.getRobotCount(); ++r)
+        plan.setRobotPath(r, straightLine(problem.getStart(r), problem.getGoal(r), si.getResolution()));
+    return plan;
+}

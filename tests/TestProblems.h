@@ -50,6 +50,9 @@ namespace ompl_parc::test
     /** \brief Straight-line timestep plan of one robot from \e a to \e b (at most 1/resolution per step). */
     std::vector<double> straightLine(const std::vector<double> &a, const std::vector<double> &b, double resolution);
 
+    /** \brief The plan of \e problem in which every robot goes straight from its start to its goal. */
+    MultiRobotPlan straightLinePlan(const MultiRobotProblem &problem);
+
     /** \brief A subproblem's patch as a plan of its own team, re-checked by the independent validator. */
     ValidationReport validatePatch(const MultiRobotProblem &problem, const Subproblem &sub, const Patch &patch);
 

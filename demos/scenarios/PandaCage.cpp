@@ -156,19 +156,7 @@ namespace ompl_parc::scenarios
     {
         checkTask(robots, task);
         const MultiRobotProblem stored = ScenarioFile::fromJson(pandaCageTaskJson(robots, task));
-        const auto &si = *stored.getSpaceInformation();
-        if (si.getResolution() == resolution)
-            return stored;
-        std::vector<RobotPtr> team;
-        std::vector<std::vector<double>> starts, goals;
-        for (std::size_t i = 0; i < robots; ++i)
-        {
-            team.push_back(si.getRobot(i));
-            starts.push_back(stored.getStart(i));
-            goals.push_back(stored.getGoal(i));
-        }
-        return MultiRobotProblem(std::make_shared<MultiRobotSpaceInformation>(team, resolution), starts, goals,
-                                 stored.getName());
+        return stored.getSpaceInformation()->getResolution() == resolution ? stored : stored.withResolution(resolution);
     }
 
     MultiRobotProblem generatePandaCageTask(std::size_t robots, std::size_t task)

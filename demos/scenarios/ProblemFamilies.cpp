@@ -60,10 +60,7 @@ namespace ompl_parc::scenarios
                 bounds.setHigh(1, highY);
             }
 
-            DiscRobot probe() const
-            {
-                return DiscRobot("probe", environment, RADIUS, bounds);
-            }
+            DiscRobot probe() const { return DiscRobot("probe", environment, RADIUS, bounds); }
 
             /** The points of \e candidates a disc may stand on. */
             std::vector<Point> freePoints(const std::vector<Point> &candidates) const
@@ -86,8 +83,9 @@ namespace ompl_parc::scenarios
                 const double x0 = bounds.low[0], y0 = bounds.low[1];
                 const auto nx = static_cast<std::size_t>((bounds.high[0] - x0) / STEP) + 1,
                            ny = static_cast<std::size_t>((bounds.high[1] - y0) / STEP) + 1;
-                const auto node = [&](std::size_t i, std::size_t j) -> Point
-                { return {x0 + STEP * static_cast<double>(i), y0 + STEP * static_cast<double>(j)}; };
+                const auto node = [&](std::size_t i, std::size_t j) -> Point {
+                    return {x0 + STEP * static_cast<double>(i), y0 + STEP * static_cast<double>(j)};
+                };
                 std::vector<char> free(nx * ny);
                 for (std::size_t i = 0; i < nx; ++i)
                     for (std::size_t j = 0; j < ny; ++j)
@@ -359,19 +357,9 @@ namespace ompl_parc::scenarios
 
         MultiRobotProblem pandaCell(std::size_t robots, std::uint32_t instance, double resolution, Rng &rng)
         {
-            const MultiRobotProblem drawn = generatePandaCageProblem(
-                robots, static_cast<std::uint32_t>(rng()), instanceName("panda_cell", robots, instance));
-            const auto &si = *drawn.getSpaceInformation();
-            std::vector<RobotPtr> team;
-            std::vector<Point> starts, goals;
-            for (std::size_t i = 0; i < robots; ++i)
-            {
-                team.push_back(si.getRobot(i));
-                starts.push_back(drawn.getStart(i));
-                goals.push_back(drawn.getGoal(i));
-            }
-            return MultiRobotProblem(std::make_shared<MultiRobotSpaceInformation>(team, resolution), starts, goals,
-                                     drawn.getName());
+            return generatePandaCageProblem(robots, static_cast<std::uint32_t>(rng()),
+                                            instanceName("panda_cell", robots, instance))
+                .withResolution(resolution);
         }
 
         using Generator = std::function<MultiRobotProblem(std::size_t, std::uint32_t, double, Rng &)>;
@@ -379,8 +367,8 @@ namespace ompl_parc::scenarios
         const std::map<std::string, Generator> &generators()
         {
             static const std::map<std::string, Generator> table = {
-                {"crossing", crossing}, {"field", field},         {"panda_cell", pandaCell},
-                {"planar_cell", planarCell}, {"ring", ring}, {"rooms", rooms}};
+                {"crossing", crossing},      {"field", field}, {"panda_cell", pandaCell},
+                {"planar_cell", planarCell}, {"ring", ring},   {"rooms", rooms}};
             return table;
         }
     }  // namespace

@@ -33,8 +33,8 @@ namespace ompl_parc
 
             Throws ompl::Exception for an unknown family, fewer than 2 robots (more than 16 for "panda_cell",
             or a count other than 2, 4, 8, 16), or an instance whose team does not fit after many draws. */
-        MultiRobotProblem generateFamilyInstance(const std::string &family, std::size_t robots,
-                                                 std::uint32_t instance, double resolution = 128.);
+        MultiRobotProblem generateFamilyInstance(const std::string &family, std::size_t robots, std::uint32_t instance,
+                                                 double resolution = 128.);
 
         /** \brief The family names generateFamilyInstance() accepts. */
         std::vector<std::string> familyNames();

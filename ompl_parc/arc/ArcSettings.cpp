@@ -79,8 +79,8 @@ ompl_parc::ArcSettings::Solvers ompl_parc::ArcSettings::solversFromString(const 
         return Solvers::PRIORITIZED;
     if (name == "composite-first")
         return Solvers::COMPOSITE_FIRST;
-    throw ompl::Exception("ArcSettings", "unknown solvers '" + name +
-                                             "' (valid: hierarchy, composite, prioritized, composite-first)");
+    throw ompl::Exception("ArcSettings",
+                          "unknown solvers '" + name + "' (valid: hierarchy, composite, prioritized, composite-first)");
 }
 
 std::string ompl_parc::ArcSettings::toString(Solvers solvers)

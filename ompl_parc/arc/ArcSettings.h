@@ -21,8 +21,8 @@ namespace ompl_parc
         /** \brief Which subproblem solvers to try, in order, on each window. */
         enum class Solvers
         {
-            HIERARCHY,   ///< prioritised ST-RRT first, then composite RRT-Connect (the paper's text)
-            COMPOSITE,   ///< composite RRT-Connect only (the authors' runs)
+            HIERARCHY,       ///< prioritised ST-RRT first, then composite RRT-Connect (the paper's text)
+            COMPOSITE,       ///< composite RRT-Connect only (the authors' runs)
             PRIORITIZED,     ///< prioritised ST-RRT only
             COMPOSITE_FIRST  ///< composite RRT-Connect first, then prioritised ST-RRT around the other robots
         };

@@ -1,9 +1,9 @@
 #include "ompl_parc/arc/ConflictResolver.h"
 
-#include "ompl_parc/util/StopSignal.h"
 #include "ompl_parc/collision/CapsuleCollision.h"
 #include "ompl_parc/collision/CollisionBody.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
+#include "ompl_parc/util/StopSignal.h"
 
 #include <ompl/util/Exception.h>
 #include <ompl/util/Time.h>
@@ -202,12 +202,9 @@ ompl_parc::Subproblem ompl_parc::ConflictResolver::makeGlobal(const MultiRobotPl
     return sub;
 }
 
-std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(const MultiRobotPlan &plan,
-                                                                      const std::vector<std::size_t> &team,
-                                                                      std::size_t timestep,
-                                                                      const ob::PlannerTerminationCondition &ptc,
-                                                                      std::uint_fast32_t seed,
-                                                                      ResolveTrace *trace) const
+std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
+    const MultiRobotPlan &plan, const std::vector<std::size_t> &team, std::size_t timestep,
+    const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed, ResolveTrace *trace) const
 {
     ResolveTrace local;
     ResolveTrace &t = trace != nullptr ? *trace : local;

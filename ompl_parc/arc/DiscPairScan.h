@@ -33,10 +33,7 @@ namespace ompl_parc
 
         /** \brief After a firstContact() that stopped early: the first timestep it did not check (the ones
             before it are clear); none after a complete one. */
-        std::optional<std::size_t> getStoppedAt() const
-        {
-            return stoppedAt_;
-        }
+        std::optional<std::size_t> getStoppedAt() const { return stoppedAt_; }
 
       private:
         /** \brief A disc's straight motion: position (exactly the path's) at timestep \e time, velocity per

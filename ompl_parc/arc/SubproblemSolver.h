@@ -28,10 +28,7 @@ namespace ompl_parc
 
         /** \brief Whether solve() avoids the subproblem's context (Subproblem::others), which is then worth
             filling. */
-        virtual bool usesContext() const
-        {
-            return false;
-        }
+        virtual bool usesContext() const { return false; }
 
         /** \brief Solve \e subproblem for the robots of \e si; on success fill \e patch and return true.
             Returns false (never throws, never blocks past \e ptc) when it gives up. */

@@ -66,3 +66,9 @@ ompl::base::ProblemDefinitionPtr ompl_parc::MultiRobotProblem::createProblemDefi
     pdef->setStartAndGoalStates(start, goal, 1e-9);
     return pdef;
 }
+
+ompl_parc::MultiRobotProblem ompl_parc::MultiRobotProblem::withResolution(double resolution) const
+{
+    return MultiRobotProblem(std::make_shared<MultiRobotSpaceInformation>(si_->getRobots(), resolution), starts_,
+                             goals_, name_);
+}

@@ -27,6 +27,10 @@ namespace ompl_parc
         const std::vector<double> &getGoal(std::size_t i) const { return goals_.at(i); }
         const std::string &getName() const { return name_; }
 
+        /** \brief The same team, starts, goals and name over a new SpaceInformation with \e resolution timesteps
+            per unit. */
+        MultiRobotProblem withResolution(double resolution) const;
+
         /** \brief Empty if every start and goal is valid alone and the starts (and the goals) are pairwise
             collision-free; otherwise the first problem found, e.g. "goal of robot 'r3' is out of bounds". */
         std::string checkEndpoints() const;

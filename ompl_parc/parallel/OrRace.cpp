@@ -1,8 +1,8 @@
 #include "ompl_parc/parallel/OrRace.h"
 
-#include "ompl_parc/util/StopSignal.h"
 #include "ompl_parc/util/PlannerSeed.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
+#include "ompl_parc/util/StopSignal.h"
 
 #include <ompl/base/PlannerData.h>
 #include <ompl/tools/multiplan/ParallelPlan.h>

@@ -2,8 +2,8 @@
 #define OMPL_PARC_OR_TASK_RUNNER_
 
 #include "ompl_parc/parallel/WorkerPool.h"
-
 #include "ompl_parc/util/StopSignal.h"
+
 #include <ompl/base/PlannerTerminationCondition.h>
 
 #include <atomic>

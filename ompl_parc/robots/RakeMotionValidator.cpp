@@ -1,6 +1,7 @@
 #include "ompl_parc/robots/RakeMotionValidator.h"
 
 #include "ompl_parc/util/StopSignal.h"
+
 #include <vector>
 
 ompl_parc::RakeMotionValidator::RakeMotionValidator(ompl::base::SpaceInformation *si, BatchCheck check,

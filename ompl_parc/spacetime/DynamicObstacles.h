@@ -31,10 +31,7 @@ namespace ompl_parc
         static constexpr std::size_t MAX_TIMESTEPS = std::size_t{1} << 22;
 
         /** \brief Whether addPath() takes \e path (its arrival is below MAX_TIMESTEPS). */
-        static bool fits(const TimedPath &path)
-        {
-            return path.getArrival() < MAX_TIMESTEPS;
-        }
+        static bool fits(const TimedPath &path) { return path.getArrival() < MAX_TIMESTEPS; }
 
         /** \brief Add robot \e other following \e path (not empty, fits(); its bodies are computed for
             timesteps 0..arrival). Throws ompl::Exception for a path that does not fit. */

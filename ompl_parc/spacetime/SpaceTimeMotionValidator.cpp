@@ -1,7 +1,7 @@
 #include "ompl_parc/spacetime/SpaceTimeMotionValidator.h"
 
-#include "ompl_parc/util/StopSignal.h"
 #include "ompl_parc/spacetime/SpaceTimeStateSpace.h"
+#include "ompl_parc/util/StopSignal.h"
 
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
@@ -75,14 +75,14 @@ bool ompl_parc::SpaceTimeMotionValidator::checkMotion(const ob::State *s1, const
         ++invalid_;
         return false;
     }
-    const bool clear =
-        forEachTimestep(s1, s2,
-                        [this](std::size_t k, const double *q)
-                        {
-                            // A motion given up on (the planning stopped) counts as invalid: never a wrong "valid".
-                            return obstacles_->isClear(q, k) &&
-                                   (k % StopSignal::POLL_INTERVAL != 0 || !StopSignal::raised());
-                        });
+    const bool clear = forEachTimestep(s1, s2,
+                                       [this](std::size_t k, const double *q)
+                                       {
+                                           // A motion given up on (the planning stopped) counts as invalid: never a
+                                           // wrong "valid".
+                                           return obstacles_->isClear(q, k) &&
+                                                  (k % StopSignal::POLL_INTERVAL != 0 || !StopSignal::raised());
+                                       });
     ++(clear ? valid_ : invalid_);
     return clear;
 }

@@ -48,16 +48,7 @@ namespace
     MultiRobotProblem fineDoorway()
     {
         // The doorway swap at 1e8 timesteps per unit: one motion check spans up to a billion states.
-        const MultiRobotProblem coarse = ScenarioFile::read(OMPL_PARC_SCENARIO_DIR "/doorway_swap.json");
-        const auto &si = *coarse.getSpaceInformation();
-        std::vector<std::vector<double>> starts, goals;
-        for (std::size_t r = 0; r < si.getRobotCount(); ++r)
-        {
-            starts.push_back(coarse.getStart(r));
-            goals.push_back(coarse.getGoal(r));
-        }
-        return MultiRobotProblem(std::make_shared<MultiRobotSpaceInformation>(si.getRobots(), 1e8), starts, goals,
-                                 "doorway_swap_1e8");
+        return ScenarioFile::read(OMPL_PARC_SCENARIO_DIR "/doorway_swap.json").withResolution(1e8);
     }
 
     void PandaCage16Parc16(benchmark::State &state)
