@@ -133,9 +133,9 @@ ompl_parc::tools::BenchmarkConfig ompl_parc::tools::BenchmarkConfig::parse(std::
     else
     {
         config.scenario_ = required(problem, "problem", "scenario");
-        config.robots_ = number<std::size_t>(problem, "problem", "robots", std::nullopt, 2, 10000);
+        config.robots_ = number<std::size_t>(problem, "problem", "robots", std::nullopt, 2, MAX_ROBOTS);
         config.resolution_ = number<double>(problem, "problem", "resolution", 128., 1e-9, 1e9);
-        config.task_ = number<std::size_t>(problem, "problem", "task", 0, 0, 1000000);
+        config.task_ = number<std::size_t>(problem, "problem", "task", 0, 0, MAX_TASK);
         config.instances_ = number<std::size_t>(problem, "problem", "instances", 1, 1, 100000);
     }
 

@@ -28,14 +28,6 @@
 
 namespace po = boost::program_options;
 
-namespace
-{
-    /** Far above every built-in scenario's sizes (Planar Cross goes to 256, Mobile Cross runs at 1024), below
-        what the pair bookkeeping of a team could not hold (about 24 bytes per robot pair). */
-    constexpr std::uint64_t MAX_ROBOTS = 10000;
-    constexpr std::uint64_t MAX_TASK = 1000000;
-}  // namespace
-
 ompl_parc::MultiRobotProblem ompl_parc::tools::problemFromOptions(const po::variables_map &vm)
 {
     if (vm.count("scenario-file"))

@@ -37,8 +37,9 @@ int main(int argc, char **argv)
             if (vm.count("scenario-file"))
                 throw std::invalid_argument("--scenario-file: this tool writes scenario files, give --scenario");
             const std::size_t count = tools::parseInteger(vm["count"].as<std::string>(), "--count", 1, 100000);
-            const std::size_t first = tools::parseInteger(vm["task"].as<std::string>(), "--task", 0, 1000000);
-            const std::size_t robots = tools::parseInteger(vm["robots"].as<std::string>(), "--robots", 1, 10000);
+            const std::size_t first = tools::parseInteger(vm["task"].as<std::string>(), "--task", 0, tools::MAX_TASK);
+            const std::size_t robots =
+                tools::parseInteger(vm["robots"].as<std::string>(), "--robots", 1, tools::MAX_ROBOTS);
             const std::filesystem::path folder = vm["out-dir"].as<std::string>();
             std::error_code error;
             std::filesystem::create_directories(folder, error);

@@ -242,8 +242,6 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
             {
                 repair.subproblem = std::move(sub);
                 repair.solver = solver->getName();
-                repair.attempts = t.calls;
-                repair.expansions = t.expansions;
                 return repair;
             }
         }

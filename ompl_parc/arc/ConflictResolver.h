@@ -17,8 +17,6 @@ namespace ompl_parc
         Subproblem subproblem;
         Patch patch;
         std::string solver;
-        /** \brief Solver calls, and window expansions after the first window, until success. */
-        unsigned int attempts{0}, expansions{0};
         bool global{false};
     };
 
