@@ -11,9 +11,13 @@
 #include "ompl_parc/planners/ArcPlannerBase.h"
 #include "ompl_parc/planners/ORPARC.h"
 #include "ompl_parc/planners/PARC.h"
+#include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
+#include "ompl_parc/quality/PlanQuality.h"
+#include "ompl_parc/quality/PlanSmoother.h"
 #include "ompl_parc/util/StopSignal.h"
 #include "ompl_parc/validation/SolutionValidator.h"
 
+#include <ompl/base/PlannerData.h>
 #include <ompl/util/RandomNumbers.h>
 #include <ompl/util/Time.h>
 
@@ -76,6 +80,47 @@ namespace
             std::cout << "parallel   " << parallel->batches << " batches, " << parallel->repairAttempts
                       << " repair attempts (" << parallel->cancelledAttempts << " cancelled)\n";
     }
+
+    /** \brief The planner's PlannerData property \e name ("" if it has none). */
+    std::string propertyOf(const ompl::base::Planner &planner, const std::string &name)
+    {
+        ompl::base::PlannerData data(planner.getSpaceInformation());
+        planner.getPlannerData(data);
+        const auto found = data.properties.find(name);
+        return found == data.properties.end() ? std::string() : found->second;
+    }
+
+    /** \brief The smoothing line: what the planner's own smoothing did (from its properties), or, for a planner
+        without one (OMPL's), smoothing \e plan here for up to \e budget seconds within \e ptc. */
+    void printSmoothing(const ompl::base::Planner &planner, bool plannerSmooths, double budget,
+                        const ompl::base::PlannerTerminationCondition &ptc, MultiRobotPlan &plan)
+    {
+        if (!(budget > 0.))
+            return;
+        SmoothingReport report;
+        if (plannerSmooths)
+        {
+            const auto count = [&](const std::string &name)
+            { return static_cast<std::size_t>(std::stoull("0" + propertyOf(planner, name))); };
+            report.seconds = std::stod("0" + propertyOf(planner, "smoothing_time REAL"));
+            report.makespanBefore = count("makespan_unsmoothed INTEGER");
+            report.sumOfCostsBefore = count("sum_of_costs_unsmoothed INTEGER");
+            report.attempts = count("smoothing_attempts INTEGER");
+            report.shortcuts = count("smoothing_shortcuts INTEGER");
+        }
+        else
+        {
+            const auto si = MultiRobotSpaceInformation::get(planner.getSpaceInformation(), "ompl_parc_demo");
+            PlanSmoother smoother(si, 1);
+            smoother.setReplanner(std::make_shared<PrioritizedSTRRTSolver>());
+            report = smoother.smooth(plan, ompl::base::plannerOrTerminationCondition(
+                                               ptc, ompl::base::timedPlannerTerminationCondition(budget)));
+            report.shortcuts += report.compositeShortcuts + report.straightenings + report.replansKept;
+        }
+        std::cout << "smoothing  " << report.seconds << " s (--smooth " << budget << "): " << report.shortcuts
+                  << " of " << report.attempts << " shortcuts and replans kept; before it, makespan "
+                  << report.makespanBefore << ", sum of costs " << report.sumOfCostsBefore << "\n";
+    }
 }  // namespace
 
 int main(int argc, char **argv)
@@ -95,6 +140,8 @@ int main(int argc, char **argv)
                 "seed", po::value<std::string>()->default_value("1"), "random seed")(
                 "time-limit", po::value<std::string>()->default_value("30"), "planning time limit in seconds")(
                 "workers", po::value<std::string>(), "worker threads of a parallel planner (its 'workers' parameter)")(
+                "smooth", po::value<std::string>()->default_value("1"),
+                "seconds of time-aware shortcutting after the solution (the planner's 'smooth' parameter); 0: off")(
                 "out", po::value<std::string>(), "write the solution to this JSON file")(
                 "no-validate", "skip the independent validation of the solution (timing and memory runs)")(
                 "picture", po::value<std::string>(),
@@ -131,6 +178,11 @@ int main(int argc, char **argv)
                                                 vm["planner"].as<std::string>() + "' has no 'workers' parameter");
                 tools::setPlannerParameter(*planner, "workers", vm["workers"].as<std::string>());
             }
+            // Planners of ours smooth inside solve() (their 'smooth' parameter); OMPL's are smoothed here.
+            const double smooth = tools::parseReal(vm["smooth"].as<std::string>(), "--smooth", 0., 3600.);
+            const bool plannerSmooths = planner->params().hasParam("smooth");
+            if (plannerSmooths)
+                tools::setPlannerParameter(*planner, "smooth", vm["smooth"].as<std::string>());
             planner->setProblemDefinition(pdef);
             planner->setup();
 
@@ -146,7 +198,8 @@ int main(int argc, char **argv)
             progress.stop();
             std::cout << "status     " << status.asString() << " after " << std::fixed << std::setprecision(3)
                       << planTime << " s\n";
-            printStatistics(*planner, planTime);
+            // Smoothing is part of solve(); the stage line shows the planning before it.
+            printStatistics(*planner, planTime - std::stod("0" + propertyOf(*planner, "smoothing_time REAL")));
             // The pictures of the solution, or of the problem alone if there is none.
             const auto writePictures = [&](const MultiRobotPlan *plan)
             {
@@ -170,14 +223,19 @@ int main(int argc, char **argv)
                 return static_cast<int>(tools::EXIT_FAILED);
             }
 
-            const MultiRobotPlan plan = tools::planOf(*planner, si, true);
+            MultiRobotPlan plan = tools::planOf(*planner, si, true);
+            printSmoothing(*planner, plannerSmooths, smooth, ptc, plan);
+            const PlanQuality quality = PlanQuality::measure(*si, plan);
             const bool validate = vm.count("no-validate") == 0;
             const ompl::time::point checkStart = ompl::time::now();
             const ValidationReport report = validate ? SolutionValidator(problem).validate(plan) : ValidationReport{};
             const double checkTime = ompl::time::seconds(ompl::time::now() - checkStart);
             std::cout << "makespan   " << plan.getMakespan() << " timesteps ("
-                      << plan.getMakespan() / si->getResolution() << " s at vmax 1)\n"
-                      << "sum costs  " << plan.getSumOfCosts() << " timesteps\n"
+                      << plan.getMakespan() / si->getResolution() << " s at vmax 1), " << std::setprecision(2)
+                      << quality.makespanRatio() << "x the lower bound " << quality.makespanBound << "\n"
+                      << "sum costs  " << plan.getSumOfCosts() << " timesteps, " << quality.sumOfCostsRatio()
+                      << "x the lower bound " << quality.sumOfCostsBound << std::setprecision(3)
+                      << " (bounds: each robot alone on a straight line)\n"
                       << "waypoints  " << plan.getPieceCount() << " pieces over the team\n"
                       << "validated  "
                       << (!validate    ? std::string("skipped (--no-validate)")

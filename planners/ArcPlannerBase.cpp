@@ -3,6 +3,7 @@
 #include "ompl_parc/planners/subproblem/CompositeRRTConnectSolver.h"
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
 #include "ompl_parc/util/PlannerSeed.h"
+#include "ompl_parc/util/SeededRealVectorSampler.h"
 #include "ompl_parc/util/StopSignal.h"
 
 #include <ompl/base/goals/GoalState.h>
@@ -42,6 +43,8 @@ ompl_parc::ArcPlannerBase::ArcPlannerBase(const ob::SpaceInformationPtr &si, con
     specs_.multithreaded = false;
     declareParam<std::string>("profile", this, &ArcPlannerBase::setProfile, &ArcPlannerBase::getProfile,
                               "mobile,planar,panda");
+    smoothing_.declareParameter(*this);
+    smoothing_.setReplanner([] { return std::make_shared<PrioritizedSTRRTSolver>(); });
     declareParam<unsigned int>("window", this, &ArcPlannerBase::setWindow, &ArcPlannerBase::getWindow, "1:10:2000");
     declareParam<std::string>("growth", this, &ArcPlannerBase::setGrowth, &ArcPlannerBase::getGrowth,
                               "linear,exponential");
@@ -156,6 +159,8 @@ void ompl_parc::ArcPlannerBase::setHorizon(unsigned int horizon)
 const ompl_parc::MultiRobotPlan &ompl_parc::ArcPlannerBase::getPlan() const
 {
     static const MultiRobotPlan none;
+    if (smoothed_)
+        return *smoothed_;
     return loop_ ? loop_->getPlan() : none;
 }
 
@@ -171,6 +176,8 @@ void ompl_parc::ArcPlannerBase::clear()
     loop_.reset();
     problem_.reset();
     statusMessage_.clear();
+    smoothed_.reset();
+    smoothing_.clear();
 }
 
 std::optional<ob::PlannerStatus> ompl_parc::ArcPlannerBase::readProblem()
@@ -220,6 +227,8 @@ ob::PlannerStatus ompl_parc::ArcPlannerBase::solve(const ob::PlannerTerminationC
 {
     checkValidity();
     statusMessage_.clear();
+    smoothed_.reset();
+    smoothing_.clear();
     try
     {
         const StopSignal::Scope scope(ptc);
@@ -253,7 +262,14 @@ ob::PlannerStatus ompl_parc::ArcPlannerBase::solveStages(const ob::PlannerTermin
         statusMessage_ = "time ran out while resolving conflicts";
         return ob::PlannerStatus(ob::PlannerStatus::TIMEOUT);
     }
-    pdef_->addSolutionPath(loop_->buildSolutionPath(), false, 0., getName());
+    if (smoothing_.getBudget() > 0.)
+    {
+        smoothed_ = loop_->getPlan();
+        smoothing_.apply(mrsi_, *smoothed_, ptc, mixSeed(loop_->getSeed(), 0x5300));
+        pdef_->addSolutionPath(smoothed_->toPathGeometric(mrsi_), false, 0., getName());
+    }
+    else
+        pdef_->addSolutionPath(loop_->buildSolutionPath(), false, 0., getName());
     return ob::PlannerStatus(ob::PlannerStatus::EXACT_SOLUTION);
 }
 
@@ -283,8 +299,5 @@ void ompl_parc::ArcPlannerBase::getPlannerData(ob::PlannerData &data) const
         p[column + " INTEGER"] = std::to_string(wins);
     }
     if (loop_ && loop_->isInitialised())
-    {
-        p["makespan INTEGER"] = std::to_string(getPlan().getMakespan());
-        p["sum_of_costs INTEGER"] = std::to_string(getPlan().getSumOfCosts());
-    }
+        smoothing_.addProperties(*mrsi_, getPlan(), data);
 }

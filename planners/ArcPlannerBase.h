@@ -4,6 +4,7 @@
 #include "ompl_parc/arc/RepairLoop.h"
 #include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/model/MultiRobotProblem.h"
+#include "ompl_parc/quality/SmoothingStep.h"
 
 #include <ompl/base/Planner.h>
 
@@ -34,7 +35,8 @@ namespace ompl_parc
         void clear() override;
         void getPlannerData(ompl::base::PlannerData &data) const override;
 
-        /** \brief The current plan (the solution after a successful solve()); empty before the first solve(). */
+        /** \brief The current plan (the solution after a successful solve(), smoothed if \e smooth is set); empty
+            before the first solve(). */
         const MultiRobotPlan &getPlan() const;
         const ArcStatistics &getStatistics() const;
         /** \brief Why the last solve() did not succeed (empty after success). */
@@ -63,6 +65,11 @@ namespace ompl_parc
         std::string getSolvers() const { return ArcSettings::toString(getSettings().solvers); }
         void setSimplifyInitial(bool simplify);
         bool getSimplifyInitial() const { return getSettings().simplifyInitial; }
+        /** \brief Seconds of time-aware shortcutting (PlanSmoother) after a solution; 0 (the default): none. */
+        void setSmoothing(double seconds) { smoothing_.setBudget(seconds); }
+        double getSmoothing() const { return smoothing_.getBudget(); }
+        /** \brief What the last solve()'s smoothing did, if it smoothed. */
+        const std::optional<SmoothingReport> &getSmoothingReport() const { return smoothing_.getReport(); }
         /** \brief 0: draw a seed from OMPL's global random sequence at the first solve(). */
         void setSeed(unsigned int seed);
         unsigned int getSeed() const { return seed_; }
@@ -95,6 +102,9 @@ namespace ompl_parc
         unsigned int seed_{0};
         std::unique_ptr<MultiRobotProblem> problem_;
         std::unique_ptr<RepairLoop> loop_;
+        SmoothingStep smoothing_;
+        /** \brief The smoothed copy of the loop's plan after a smoothed solve (the loop keeps its own). */
+        std::optional<MultiRobotPlan> smoothed_;
         std::string statusMessage_;
     };
 }  // namespace ompl_parc

@@ -1,5 +1,8 @@
 #include "ompl_parc/planners/ORPARC.h"
 
+#include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
+#include "ompl_parc/util/SeededRealVectorSampler.h"
+
 #include <ompl/base/PlannerData.h>
 
 #include <map>
@@ -15,6 +18,7 @@ ompl_parc::ORPARC::ORPARC(const ob::SpaceInformationPtr &si)
     // The prototype's GenericParams themselves: setting "window" on ORPARC sets the prototype's window.
     params().include(prototype_->params());
     race_.declareInstances(params());
+    smoothing_.setReplanner([] { return std::make_shared<PrioritizedSTRRTSolver>(); });
     declareParam<unsigned int>("total_workers", this, &ORPARC::setTotalWorkers, &ORPARC::getTotalWorkers, "1:1:64");
 }
 
@@ -36,6 +40,8 @@ void ompl_parc::ORPARC::clear()
 {
     Planner::clear();
     race_.clear();
+    smoothed_.reset();
+    smoothing_.clear();
 }
 
 void ompl_parc::ORPARC::setProblemDefinition(const ob::ProblemDefinitionPtr &pdef)
@@ -59,6 +65,7 @@ void ompl_parc::ORPARC::createRacers()
             racer->params().setParam("profile", profile);
             racer->params().setParams(values, true);
             racer->setSeed(seed);
+            racer->setSmoothing(0.);
             return racer;
         },
         prototype_->getSeed(), pdef_);
@@ -69,7 +76,20 @@ ob::PlannerStatus ompl_parc::ORPARC::solve(const ob::PlannerTerminationCondition
     checkValidity();
     if (!race_.hasRacers())
         createRacers();
-    return race_.run(ptc);
+    smoothed_.reset();
+    smoothing_.clear();
+    const ob::PlannerStatus status = race_.run(ptc);
+    if (race_.getWinner() >= 0 && prototype_->getSmoothing() > 0.)
+    {
+        const PARC &winner = getRacer(race_.getWinner());
+        const auto mrsi = MultiRobotSpaceInformation::get(si_, getName());
+        smoothed_ = winner.getPlan();
+        smoothing_.setBudget(prototype_->getSmoothing());
+        smoothing_.apply(mrsi, *smoothed_, ptc, mixSeed(winner.getSeed(), 0x5300));
+        pdef_->clearSolutionPaths();
+        pdef_->addSolutionPath(smoothed_->toPathGeometric(mrsi), false, 0., getName());
+    }
+    return status;
 }
 
 const ompl_parc::PARC &ompl_parc::ORPARC::getRacer(std::size_t k) const
@@ -101,6 +121,8 @@ const ompl_parc::PARC &ompl_parc::ORPARC::reported() const
 
 const ompl_parc::MultiRobotPlan &ompl_parc::ORPARC::getPlan() const
 {
+    if (smoothed_)
+        return *smoothed_;
     return race_.getWinner() >= 0 ? getRacer(race_.getWinner()).getPlan() : prototype_->getPlan();
 }
 
@@ -123,6 +145,8 @@ void ompl_parc::ORPARC::getPlannerData(ob::PlannerData &data) const
 {
     Planner::getPlannerData(data);
     reported().getPlannerData(data);
+    if (smoothed_)
+        smoothing_.addProperties(*MultiRobotSpaceInformation::get(si_, getName()), *smoothed_, data);
     data.properties["reported_instance INTEGER"] = std::to_string(getReportedInstance());
     race_.addProperties(data);
 }

@@ -3,8 +3,10 @@
 
 #include "ompl_parc/parallel/OrRace.h"
 #include "ompl_parc/planners/PARC.h"
+#include "ompl_parc/quality/SmoothingStep.h"
 
 #include <memory>
+#include <optional>
 
 namespace ompl_parc
 {
@@ -38,7 +40,8 @@ namespace ompl_parc
         void setProblemDefinition(const ompl::base::ProblemDefinitionPtr &pdef) override;
         void getPlannerData(ompl::base::PlannerData &data) const override;
 
-        /** \brief The winner's plan after a successful solve() (empty otherwise). */
+        /** \brief The winner's plan after a successful solve(), smoothed if \e smooth (the prototype's) is set; empty
+            otherwise. The instances never smooth: the winner's plan is smoothed once, after the race. */
         const MultiRobotPlan &getPlan() const;
         /** \brief The reported instance's statistics (all zero before a solve). */
         const ArcStatistics &getStatistics() const;
@@ -79,6 +82,9 @@ namespace ompl_parc
 
         std::shared_ptr<PARC> prototype_;
         OrRace race_;
+        SmoothingStep smoothing_;
+        /** \brief The smoothed copy of the winner's plan after a smoothed solve. */
+        std::optional<MultiRobotPlan> smoothed_;
     };
 }  // namespace ompl_parc
 

@@ -1,5 +1,7 @@
 #include "ompl_parc/planners/ORPPSTRRT.h"
 
+#include "ompl_parc/util/SeededRealVectorSampler.h"
+
 #include <map>
 
 namespace ob = ompl::base;
@@ -19,6 +21,7 @@ ob::PlannerStatus ompl_parc::ORPPSTRRT::solve(const ob::PlannerTerminationCondit
     params().getParams(values);
     values.erase("instances");
     values["priority_order"] = "shuffled";
+    values["smooth"] = "0";  // the winner's plan is smoothed once, below
     race_.createRacers(
         [&](unsigned int, std::uint_fast32_t seed)
         {
@@ -30,7 +33,11 @@ ob::PlannerStatus ompl_parc::ORPPSTRRT::solve(const ob::PlannerTerminationCondit
         getSeed(), pdef_);
     const ob::PlannerStatus status = race_.run(ptc);
     if (race_.getWinner() >= 0)
-        plan_ = static_cast<const PrioritizedSTRRT &>(*race_.getRacers()[race_.getWinner()]).getPlan();
+    {
+        const auto &winner = static_cast<const PrioritizedSTRRT &>(*race_.getRacers()[race_.getWinner()]);
+        plan_ = winner.getPlan();
+        publishPlan(ptc, mixSeed(winner.getSeed(), 0x5300));
+    }
     return status;
 }
 

@@ -2,6 +2,7 @@
 
 #include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/util/PlannerSeed.h"
+#include "ompl_parc/util/SeededRealVectorSampler.h"
 #include "ompl_parc/util/StopSignal.h"
 
 #include <ompl/base/goals/GoalState.h>
@@ -18,6 +19,8 @@ ompl_parc::PrioritizedSTRRT::PrioritizedSTRRT(const ob::SpaceInformationPtr &si)
     declareParam<std::string>("priority_order", this, &PrioritizedSTRRT::setPriorityOrder,
                               &PrioritizedSTRRT::getPriorityOrder);
     declareParam<unsigned int>("seed", this, &PrioritizedSTRRT::setSeed, &PrioritizedSTRRT::getSeed);
+    smoothing_.declareParameter(*this);
+    smoothing_.setReplanner([] { return std::make_shared<PrioritizedSTRRTSolver>(); });
     declareParam<std::string>("rewiring", this, &PrioritizedSTRRT::setRewiring, &PrioritizedSTRRT::getRewiring);
     declareParam<unsigned int>("batch_size", this, &PrioritizedSTRRT::setBatchSize, &PrioritizedSTRRT::getBatchSize,
                                "1:1:1000000");
@@ -119,8 +122,15 @@ ob::PlannerStatus ompl_parc::PrioritizedSTRRT::solve(const ob::PlannerTerminatio
     plan_ = MultiRobotPlan(*mrsi_);
     for (std::size_t i = 0; i < mrsi_->getRobotCount(); ++i)
         plan_.setPath(i, patch.paths[i]);
-    pdef_->addSolutionPath(plan_.toPathGeometric(mrsi_), false, 0., getName());
+    publishPlan(ptc, mixSeed(lastSeed_, 0x5300));
     return ob::PlannerStatus::EXACT_SOLUTION;
+}
+
+void ompl_parc::PrioritizedSTRRT::publishPlan(const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed)
+{
+    smoothing_.apply(mrsi_, plan_, ptc, seed);
+    pdef_->clearSolutionPaths();
+    pdef_->addSolutionPath(plan_.toPathGeometric(mrsi_), false, 0., getName());
 }
 
 void ompl_parc::PrioritizedSTRRT::getPlannerData(ob::PlannerData &data) const
@@ -129,4 +139,5 @@ void ompl_parc::PrioritizedSTRRT::getPlannerData(ob::PlannerData &data) const
     data.properties["seed INTEGER"] = std::to_string(lastSeed_);
     data.properties["priority_order STRING"] = getPriorityOrder();
     data.properties["solved BOOLEAN"] = solved_ ? "1" : "0";
+    smoothing_.addProperties(*mrsi_, plan_, data);
 }

@@ -4,6 +4,7 @@
 #include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/model/MultiRobotSpaceInformation.h"
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
+#include "ompl_parc/quality/SmoothingStep.h"
 
 #include <ompl/base/Planner.h>
 
@@ -49,9 +50,17 @@ namespace ompl_parc
         double getInitialTimeBoundFactor() const { return settings_.initialTimeBoundFactor; }
         void setTimeBoundFactorIncrease(double factor);
         double getTimeBoundFactorIncrease() const { return settings_.timeBoundFactorIncrease; }
+        /** \brief Seconds of time-aware shortcutting (PlanSmoother) after a solution; 0 (the default): none. */
+        void setSmoothing(double seconds) { smoothing_.setBudget(seconds); }
+        double getSmoothing() const { return smoothing_.getBudget(); }
 
       protected:
+        /** \brief Smooth plan_ (conflict-free) as \e smooth asks, drawing from \e seed, and make it the
+            ProblemDefinition's only solution. */
+        void publishPlan(const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed);
+
         MultiRobotPlan plan_;
+        SmoothingStep smoothing_;
 
       private:
         /** \brief Apply \e settings if PrioritizedSTRRTSolver accepts them (it throws otherwise). */

@@ -282,3 +282,15 @@ void ompl_parc::ConflictDetector::invalidate(std::size_t robot, std::size_t time
     if (segmentLength_ > 0)
         bounds.valid = std::min(bounds.valid, timestep / segmentLength_);
 }
+
+void ompl_parc::ConflictDetector::restart(std::size_t robot, std::size_t timestep)
+{
+    for (std::size_t other = 0; other < robots_; ++other)
+        if (other != robot)
+        {
+            const std::size_t p = pairIndex(std::min(robot, other), std::max(robot, other));
+            frontier_[p] = timestep;
+            knownConflict_[p] = 0;
+        }
+    invalidate(robot, timestep);  // the swept bounds
+}

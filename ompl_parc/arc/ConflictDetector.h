@@ -82,6 +82,13 @@ namespace ompl_parc
             its pairs and drops its swept bounds from the segment of \e timestep on. Not during a scan. */
         void invalidate(std::size_t robot, std::size_t timestep);
 
+        /** \brief The caller knows that \e robot's pairs are conflict-free before timestep \e timestep (a plan known
+            to be conflict-free whose path of \e robot is about to change, or changed back, from \e timestep on):
+            sets the frontier of each of its pairs to exactly \e timestep, forgetting known conflicts, and drops its
+            swept bounds from the segment of \e timestep on. Unlike invalidate(), it may move frontiers forward: a
+            smoother trying a change of one robot's path scans only from the change. Not during a scan. */
+        void restart(std::size_t robot, std::size_t timestep);
+
         /** \brief True if pair \e pair (as by pairIndex()) is known conflict-free to its end in \e plan. */
         bool isSettled(const MultiRobotPlan &plan, std::size_t pair) const
         {

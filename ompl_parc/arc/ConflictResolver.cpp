@@ -98,70 +98,8 @@ void ompl_parc::ConflictResolver::fillContext(const MultiRobotPlan &plan, Subpro
 {
     sub.others.clear();
     sub.otherPaths.clear();
-    if (!usesContext_ || sub.windowEnd - sub.windowStart >= MAX_CONTEXT_TIMESTEPS)
-        return;
-    // A robot moves at most a quarter unit between two sampled bodies (vMax 1): boxes grow by that and more.
-    constexpr double MARGIN = 0.5;
-    const auto stride = static_cast<std::size_t>(std::max(1., std::round(0.25 * si_.getResolution())));
-    CollisionBody body;
-    std::vector<double> q;
-    const auto bodyAt = [&](std::size_t r, std::size_t t, CollisionBody &out)
-    {
-        q.resize(plan.getDimension(r));
-        plan.getConfig(r, t, q.data());
-        si_.getRobot(r)->computeBody(q.data(), out);
-    };
-    using Box = std::array<std::array<double, 3>, 2>;
-    const auto boxOf = [&](std::size_t r)
-    {
-        Box box{{{HUGE_VAL, HUGE_VAL, HUGE_VAL}, {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}}};
-        for (std::size_t t = sub.windowStart;; t = std::min(t + stride, sub.windowEnd))
-        {
-            bodyAt(r, t, body);
-            body.expandBox(box[0], box[1]);
-            if (t == sub.windowEnd)
-                break;
-        }
-        return box;
-    };
-    Box team{{{HUGE_VAL, HUGE_VAL, HUGE_VAL}, {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}}};
-    std::vector<CollisionBody> starts(sub.robots.size()), goals(sub.robots.size());
-    for (std::size_t k = 0; k < sub.robots.size(); ++k)
-    {
-        const Box box = boxOf(sub.robots[k]);
-        for (int d = 0; d < 3; ++d)
-        {
-            team[0][d] = std::min(team[0][d], box[0][d] - MARGIN);
-            team[1][d] = std::max(team[1][d], box[1][d] + MARGIN);
-        }
-        bodyAt(sub.robots[k], sub.windowStart, starts[k]);
-        bodyAt(sub.robots[k], sub.windowEnd, goals[k]);
-    }
-    CollisionBody first, last;
-    for (std::size_t r = 0, k = 0; r < plan.getRobotCount(); ++r)
-    {
-        if (k < sub.robots.size() && sub.robots[k] == r)
-        {
-            ++k;
-            continue;
-        }
-        const Box box = boxOf(r);
-        bool near = true;
-        for (int d = 0; d < 3; ++d)
-            near = near && box[0][d] <= team[1][d] && box[1][d] >= team[0][d];
-        if (!near)
-            continue;
-        bodyAt(r, sub.windowStart, first);
-        bodyAt(r, sub.windowEnd, last);
-        bool blocking = false;
-        for (std::size_t j = 0; j < sub.robots.size() && !blocking; ++j)
-            blocking = bodiesCollide(first, starts[j]) || bodiesCollide(last, goals[j]);
-        if (blocking)
-            continue;
-        sub.others.push_back(r);
-        sub.otherPaths.emplace_back(plan.getDimension(r));
-        plan.getPath(r).appendRange(sub.windowStart, sub.windowEnd, sub.otherPaths.back());
-    }
+    if (usesContext_ && sub.windowEnd - sub.windowStart < MAX_CONTEXT_TIMESTEPS)
+        sub.fillContext(si_, plan);
 }
 
 ompl_parc::Subproblem ompl_parc::ConflictResolver::makeSubproblem(const MultiRobotPlan &plan,

@@ -75,11 +75,8 @@ namespace ompl_parc
         bool teamClear(const MultiRobotPlan &plan, const std::vector<std::size_t> &team, std::size_t timestep) const;
         void fillEndpoints(const MultiRobotPlan &plan, Subproblem &sub) const;
         void fillBounds(const MultiRobotPlan &plan, Subproblem &sub) const;
-        /** \brief Subproblem::others and otherPaths, when a solver of the hierarchy uses them: every robot
-            outside the team whose workspace box over the window (bodies every quarter unit of time) meets the
-            team's, except one that touches a team robot at the window's start or end (part of another
-            conflict, which no patch of this team can avoid); none for a window of MAX_CONTEXT_TIMESTEPS or
-            more. */
+        /** \brief Subproblem::fillContext() when a solver of the hierarchy uses the context; none for a window of
+            MAX_CONTEXT_TIMESTEPS or more. */
         void fillContext(const MultiRobotPlan &plan, Subproblem &sub) const;
 
         const MultiRobotSpaceInformation &si_;

@@ -1,6 +1,13 @@
 #include "ompl_parc/arc/Subproblem.h"
 
+#include "ompl_parc/collision/CapsuleCollision.h"
+#include "ompl_parc/collision/CollisionBody.h"
+#include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/model/MultiRobotSpaceInformation.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
 
 std::string ompl_parc::Subproblem::check(const MultiRobotSpaceInformation &si) const
 {
@@ -44,3 +51,71 @@ ompl::base::PlannerTerminationCondition ompl_parc::Subproblem::cappedTermination
     return ompl::base::plannerOrTerminationCondition(
         ptc, ompl::base::PlannerTerminationCondition([iterations, cap] { return ++*iterations > cap; }));
 }
+void ompl_parc::Subproblem::fillContext(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan)
+{
+    others.clear();
+    otherPaths.clear();
+    // A robot moves at most a quarter unit between two sampled bodies (vMax 1): boxes grow by that and more.
+    constexpr double MARGIN = 0.5;
+    const auto stride = static_cast<std::size_t>(std::max(1., std::round(0.25 * si.getResolution())));
+    CollisionBody body;
+    std::vector<double> q;
+    const auto bodyAt = [&](std::size_t r, std::size_t t, CollisionBody &out)
+    {
+        q.resize(plan.getDimension(r));
+        plan.getConfig(r, t, q.data());
+        si.getRobot(r)->computeBody(q.data(), out);
+    };
+    using Box = std::array<std::array<double, 3>, 2>;
+    const auto boxOf = [&](std::size_t r)
+    {
+        Box box{{{HUGE_VAL, HUGE_VAL, HUGE_VAL}, {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}}};
+        for (std::size_t t = windowStart;; t = std::min(t + stride, windowEnd))
+        {
+            bodyAt(r, t, body);
+            body.expandBox(box[0], box[1]);
+            if (t == windowEnd)
+                break;
+        }
+        return box;
+    };
+    Box team{{{HUGE_VAL, HUGE_VAL, HUGE_VAL}, {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}}};
+    std::vector<CollisionBody> starts(robots.size()), goals(robots.size());
+    for (std::size_t k = 0; k < robots.size(); ++k)
+    {
+        const Box box = boxOf(robots[k]);
+        for (int d = 0; d < 3; ++d)
+        {
+            team[0][d] = std::min(team[0][d], box[0][d] - MARGIN);
+            team[1][d] = std::max(team[1][d], box[1][d] + MARGIN);
+        }
+        bodyAt(robots[k], windowStart, starts[k]);
+        bodyAt(robots[k], windowEnd, goals[k]);
+    }
+    CollisionBody first, last;
+    for (std::size_t r = 0, k = 0; r < plan.getRobotCount(); ++r)
+    {
+        if (k < robots.size() && robots[k] == r)
+        {
+            ++k;
+            continue;
+        }
+        const Box box = boxOf(r);
+        bool near = true;
+        for (int d = 0; d < 3; ++d)
+            near = near && box[0][d] <= team[1][d] && box[1][d] >= team[0][d];
+        if (!near)
+            continue;
+        bodyAt(r, windowStart, first);
+        bodyAt(r, windowEnd, last);
+        bool blocking = false;
+        for (std::size_t j = 0; j < robots.size() && !blocking; ++j)
+            blocking = bodiesCollide(first, starts[j]) || bodiesCollide(last, goals[j]);
+        if (blocking)
+            continue;
+        others.push_back(r);
+        otherPaths.emplace_back(plan.getDimension(r));
+        plan.getPath(r).appendRange(windowStart, windowEnd, otherPaths.back());
+    }
+}
+

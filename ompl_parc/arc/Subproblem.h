@@ -14,6 +14,7 @@
 
 namespace ompl_parc
 {
+    class MultiRobotPlan;
     class MultiRobotSpaceInformation;
 
     /** \brief A locally coupled planning problem around a conflict: a team of robots, a window of the
@@ -37,6 +38,12 @@ namespace ompl_parc
             rest of the team: advisory only, the repaired plan is checked for conflicts as any other. */
         std::vector<std::size_t> others;
         std::vector<TimedPath> otherPaths;
+
+        /** \brief Fill the context from \e plan (of the team of \e si): every robot outside the team whose bodies over
+            the window (sampled every quarter unit of motion, boxes grown by half a unit) come near the team's, with
+            its path over the window; left out are robots that touch a team robot's local start or goal at the
+            window's ends (a conflict no patch of this team can avoid). */
+        void fillContext(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan);
 
         /** \brief Empty if the subproblem is well formed for the team of \e si, else the reason. */
         std::string check(const MultiRobotSpaceInformation &si) const;

@@ -10,12 +10,6 @@ namespace og = ompl::geometric;
 
 namespace
 {
-    /** Number of timesteps a motion of length \e d takes at \e resolution (0 for no motion). */
-    std::size_t stepsFor(double d, double resolution)
-    {
-        return static_cast<std::size_t>(std::ceil(d * resolution - 1e-9));
-    }
-
     /** Call \e lay(from, to, steps) for each segment of \e path over \e space with the number of timesteps it
         takes on the grid (segments of 0 steps included: TimedPath::appendMotion skips them). */
     template <typename Lay>
@@ -26,10 +20,15 @@ namespace
         for (std::size_t k = 1; k < path.getStateCount(); ++k)
         {
             const ob::State *from = path.getState(k - 1), *to = path.getState(k);
-            lay(from, to, stepsFor(space->distance(from, to), resolution));
+            lay(from, to, ompl_parc::MultiRobotPlan::stepsFor(space->distance(from, to), resolution));
         }
     }
 }  // namespace
+
+std::size_t ompl_parc::MultiRobotPlan::stepsFor(double distance, double resolution)
+{
+    return static_cast<std::size_t>(std::ceil(distance * resolution - 1e-9));
+}
 
 ompl_parc::MultiRobotPlan::MultiRobotPlan(std::vector<unsigned int> dimensions, double resolution)
     : resolution_(resolution)

@@ -83,6 +83,10 @@ namespace ompl_parc
         void allocateStates(const MultiRobotSpaceInformation &si, const std::vector<std::size_t> &times,
                             std::size_t from, std::size_t to, ompl::base::State **out) const;
 
+        /** \brief Timesteps a straight motion of length \e distance takes at \e resolution (0 for none): how every
+            path is laid on the grid. */
+        static std::size_t stepsFor(double distance, double resolution);
+
         /** \brief Lay a composite path on the timestep grid: each segment takes ceil(length x resolution)
             timesteps with all robots moving synchronised; trailing states at a robot's goal are dropped so
             its arrival is when it stops moving. Dense paths (one state per timestep) are accepted too. */

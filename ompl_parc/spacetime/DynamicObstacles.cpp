@@ -26,41 +26,45 @@ void ompl_parc::DynamicObstacles::addPath(const Robot &other, const TimedPath &p
     if (path.empty() || path.getDimension() != other.getDimension())
         throw ompl::Exception("DynamicObstacles",
                               "path of robot '" + other.getName() + "' is empty or not of its dimension");
-    std::vector<CollisionBody> bodies(path.getArrival() + 1);
+    BodyTrack track;
+    CollisionBody body;
     std::vector<double> q(path.getDimension());
     TimedPath::Cursor cursor(path);
-    for (std::size_t t = 0; t < bodies.size(); ++t)
+    for (std::size_t t = 0; t <= path.getArrival(); ++t)
     {
         cursor.get(t, q.data());
-        other.computeBody(q.data(), bodies[t]);
+        other.computeBody(q.data(), body);
+        if (t == 0)
+            track.reserve(path.getArrival() + 1, 11 * body.size() + 4);
+        track.append(body);
     }
-    bodies_.push_back(std::move(bodies));
+    tracks_.push_back(std::move(track));
 }
 
 bool ompl_parc::DynamicObstacles::isClear(const double *q, std::size_t timestep) const
 {
     if (!robot_->isValid(q))
         return false;
-    thread_local CollisionBody body;
+    thread_local CollisionBody body, other;
     robot_->computeBody(q, body);
-    return std::none_of(bodies_.begin(), bodies_.end(),
-                        [&](const std::vector<CollisionBody> &other)
-                        { return bodiesCollide(body, other[std::min(timestep, other.size() - 1)]); });
+    return std::none_of(tracks_.begin(), tracks_.end(),
+                        [&](const BodyTrack &track)
+                        { return track.collides(std::min(timestep, track.size() - 1), body, other); });
 }
 
 std::optional<std::size_t> ompl_parc::DynamicObstacles::earliestHold(const double *q) const
 {
     if (!robot_->isValid(q))
         return std::nullopt;
-    CollisionBody body;
+    CollisionBody body, other;
     robot_->computeBody(q, body);
     std::size_t hold = 0;
-    for (const auto &other : bodies_)
+    for (const auto &track : tracks_)
     {
-        if (bodiesCollide(body, other.back()))
+        if (track.collides(track.size() - 1, body, other))
             return std::nullopt;  // it arrives there (or stays) and never leaves
-        for (std::size_t t = other.size() - 1; t-- > hold;)
-            if (bodiesCollide(body, other[t]))
+        for (std::size_t t = track.size() - 1; t-- > hold;)
+            if (track.collides(t, body, other))
             {
                 hold = t + 1;
                 break;

@@ -1,6 +1,7 @@
 #ifndef OMPL_PARC_DYNAMIC_OBSTACLES_
 #define OMPL_PARC_DYNAMIC_OBSTACLES_
 
+#include "ompl_parc/collision/BodyTrack.h"
 #include "ompl_parc/model/TimedPath.h"
 #include "ompl_parc/robots/Robot.h"
 
@@ -16,7 +17,7 @@ namespace ompl_parc
 
         Each other robot's path is a sequence of configurations at integer timesteps, held after its end (a
         robot that has arrived stays at its goal). Their collision bodies are computed once here, per
-        timestep, because space-time planning asks for them at the same timesteps over and over. */
+        timestep (flat, BodyTrack), because space-time planning asks for them at the same timesteps over and over. */
     class DynamicObstacles
     {
       public:
@@ -37,7 +38,7 @@ namespace ompl_parc
             timesteps 0..arrival). Throws ompl::Exception for a path that does not fit. */
         void addPath(const Robot &other, const TimedPath &path);
 
-        std::size_t getPathCount() const { return bodies_.size(); }
+        std::size_t getPathCount() const { return tracks_.size(); }
 
         /** \brief True if the robot at \e q is valid (bounds, self, environment) and touches no other robot
             at timestep \e timestep. */
@@ -50,8 +51,8 @@ namespace ompl_parc
       private:
         RobotPtr robot_;
         double resolution_;
-        /** \brief bodies_[o][t]: obstacle o at timestep t; its last body is held afterwards. */
-        std::vector<std::vector<CollisionBody>> bodies_;
+        /** \brief tracks_[o]: obstacle o's bodies at timesteps 0..arrival; its last body is held afterwards. */
+        std::vector<BodyTrack> tracks_;
     };
 
     using DynamicObstaclesPtr = std::shared_ptr<const DynamicObstacles>;

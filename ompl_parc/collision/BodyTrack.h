@@ -1,0 +1,45 @@
+#ifndef OMPL_PARC_BODY_TRACK_
+#define OMPL_PARC_BODY_TRACK_
+
+#include "ompl_parc/collision/CollisionBody.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace ompl_parc
+{
+    /** \brief The collision bodies of one robot at consecutive timesteps, stored flat: all of their arrays in one
+        buffer instead of a CollisionBody (eleven heap arrays) per timestep. Planning around a robot's timed path
+        (DynamicObstacles) keeps its bodies for thousands of timesteps, and allocating and freeing them one by one
+        cost more than the checks that use them. A body is loaded back into a caller's scratch CollisionBody, bit
+        for bit the body appended (bounding spheres included). */
+    class BodyTrack
+    {
+      public:
+        /** \brief Append \e body (bounds up to date, as computeBody() leaves them) as the next timestep's. */
+        void append(const CollisionBody &body);
+
+        std::size_t size() const { return boundRadius_.size(); }
+        bool empty() const { return size() == 0; }
+
+        /** \brief Timestep \e t's body into \e out (t < size()). */
+        void load(std::size_t t, CollisionBody &out) const;
+
+        /** \brief bodiesCollide(\e body, timestep \e t's body), exactly; the stored body is loaded (into \e scratch)
+            only when the two bounding spheres overlap, which is bodiesCollide()'s first test: most pairs stop there. */
+        bool collides(std::size_t t, const CollisionBody &body, CollisionBody &scratch) const;
+
+        void reserve(std::size_t timesteps, std::size_t valuesPerBody);
+
+      private:
+        /** \brief Per body: its eleven capsule arrays one after another. */
+        std::vector<double> values_;
+        /** \brief Per body, its bounding sphere. */
+        std::vector<double> centerX_, centerY_, centerZ_, boundRadius_;
+        /** \brief Where body t starts in values_ (one more entry than bodies). */
+        std::vector<std::size_t> offsets_{0};
+        std::vector<unsigned char> spheresOnly_;
+    };
+}  // namespace ompl_parc
+
+#endif

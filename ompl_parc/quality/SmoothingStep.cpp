@@ -1,0 +1,62 @@
+#include "ompl_parc/quality/SmoothingStep.h"
+
+#include "ompl_parc/quality/PlanQuality.h"
+
+#include <ompl/util/Exception.h>
+
+#include <cmath>
+#include <string>
+
+namespace ob = ompl::base;
+
+void ompl_parc::SmoothingStep::declareParameter(ob::Planner &planner)
+{
+    planner.params().declareParam<double>("smooth", [this](double seconds) { setBudget(seconds); },
+                                          [this] { return budget_; });
+    planner.params()["smooth"].setRangeSuggestion("0.:0.1:3600.");
+}
+
+void ompl_parc::SmoothingStep::setBudget(double seconds)
+{
+    if (!(seconds >= 0.) || !std::isfinite(seconds))
+        throw ompl::Exception("smooth", "the smoothing budget must be a finite number of seconds >= 0");
+    budget_ = seconds;
+}
+
+void ompl_parc::SmoothingStep::apply(const MultiRobotSpaceInformationPtr &si, MultiRobotPlan &plan,
+                                     const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed)
+{
+    report_.reset();
+    if (budget_ <= 0.)
+        return;
+    const auto budget = ob::plannerOrTerminationCondition(ptc, ob::timedPlannerTerminationCondition(budget_));
+    PlanSmoother smoother(si, seed);
+    if (replanner_)
+        smoother.setReplanner(replanner_());
+    report_ = smoother.smooth(plan, budget);
+}
+
+void ompl_parc::SmoothingStep::addProperties(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan,
+                                             ob::PlannerData &data) const
+{
+    if (plan.getRobotCount() == 0 || plan.getPath(0).empty())
+        return;
+    auto &p = data.properties;
+    const PlanQuality quality = PlanQuality::measure(si, plan);
+    p["makespan INTEGER"] = std::to_string(quality.makespan);
+    p["sum_of_costs INTEGER"] = std::to_string(quality.sumOfCosts);
+    p["makespan_bound INTEGER"] = std::to_string(quality.makespanBound);
+    p["sum_of_costs_bound INTEGER"] = std::to_string(quality.sumOfCostsBound);
+    p["makespan_ratio REAL"] = std::to_string(quality.makespanRatio());
+    p["sum_of_costs_ratio REAL"] = std::to_string(quality.sumOfCostsRatio());
+    if (report_)
+    {
+        p["smoothing_time REAL"] = std::to_string(report_->seconds);
+        p["smoothing_attempts INTEGER"] = std::to_string(report_->attempts);
+        p["smoothing_shortcuts INTEGER"] =
+            std::to_string(report_->shortcuts + report_->compositeShortcuts + report_->straightenings +
+                           report_->replansKept);
+        p["makespan_unsmoothed INTEGER"] = std::to_string(report_->makespanBefore);
+        p["sum_of_costs_unsmoothed INTEGER"] = std::to_string(report_->sumOfCostsBefore);
+    }
+}

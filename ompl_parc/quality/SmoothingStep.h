@@ -1,0 +1,59 @@
+#ifndef OMPL_PARC_SMOOTHING_STEP_
+#define OMPL_PARC_SMOOTHING_STEP_
+
+#include "ompl_parc/model/MultiRobotPlan.h"
+#include "ompl_parc/model/MultiRobotSpaceInformation.h"
+#include "ompl_parc/quality/PlanSmoother.h"
+
+#include <ompl/base/Planner.h>
+#include <ompl/base/PlannerData.h>
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+
+namespace ompl_parc
+{
+    /** \brief The post-processing step our planners share: the declared parameter \e smooth (seconds of PlanSmoother
+        after a solution is found; 0, the default, leaves the plan and the planning time as they were) and the
+        plan-quality properties every planner reports.
+
+        Smoothing runs inside solve(), after the solution, until the budget is spent, no attempt gains any more, or
+        the solve's own termination condition fires (a solve never outlasts its ptc for it). */
+    class SmoothingStep
+    {
+      public:
+        /** \brief Declare \e smooth on \e planner (its params()), backed by this step. */
+        void declareParameter(ompl::base::Planner &planner);
+
+        /** \brief Makes the smoother's replanner (PlanSmoother::setReplanner()) when a smoothing starts; planners give
+            prioritised ST-RRT. (Made then, not before: an OMPL planner made draws from OMPL's seed sequence, which
+            would change the planning of a solve that does not smooth.) */
+        void setReplanner(std::function<SubproblemSolverPtr()> factory) { replanner_ = std::move(factory); }
+
+        void setBudget(double seconds);
+        double getBudget() const { return budget_; }
+
+        /** \brief With a budget, smooth \e plan (conflict-free) in place, drawing from \e seed, under \e ptc and the
+            budget; remembers the report. Without one, forgets the last report. */
+        void apply(const MultiRobotSpaceInformationPtr &si, MultiRobotPlan &plan,
+                   const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed);
+
+        /** \brief The last apply()'s report, if it smoothed. */
+        const std::optional<SmoothingReport> &getReport() const { return report_; }
+        void clear() { report_.reset(); }
+
+        /** \brief Add \e plan's quality (makespan, sum_of_costs, their straight-line bounds and ratios, PlanQuality)
+            and, after smoothing, smoothing_time, shortcuts and the unsmoothed makespan and sum of costs. Nothing
+            for an empty plan. */
+        void addProperties(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan,
+                           ompl::base::PlannerData &data) const;
+
+      private:
+        double budget_{0.};
+        std::function<SubproblemSolverPtr()> replanner_;
+        std::optional<SmoothingReport> report_;
+    };
+}  // namespace ompl_parc
+
+#endif

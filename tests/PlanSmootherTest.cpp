@@ -1,0 +1,170 @@
+#include "TestProblems.h"
+
+#include "ompl_parc/planners/ARC.h"
+#include "ompl_parc/planners/ORPARC.h"
+#include "ompl_parc/planners/PrioritizedSTRRT.h"
+#include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
+#include "ompl_parc/quality/PlanQuality.h"
+#include "ompl_parc/quality/PlanSmoother.h"
+#include "ompl_parc/scenarios/ProblemFamilies.h"
+#include "ompl_parc/scenarios/Scenarios.h"
+#include "ompl_parc/validation/SolutionValidator.h"
+
+#include <gtest/gtest.h>
+#include <ompl/base/PlannerData.h>
+#include <ompl/util/Exception.h>
+
+#include <random>
+
+using namespace ompl_parc;
+namespace ob = ompl::base;
+
+namespace
+{
+    /** The planner's PlannerData property \e name ("" if missing). */
+    std::string property(const ob::Planner &planner, const std::string &name)
+    {
+        ob::PlannerData data(planner.getSpaceInformation());
+        planner.getPlannerData(data);
+        const auto found = data.properties.find(name);
+        return found == data.properties.end() ? "" : found->second;
+    }
+
+    /** Every robot starts and ends where it did in \e before. */
+    void expectSameEndpoints(const MultiRobotPlan &before, const MultiRobotPlan &after)
+    {
+        for (std::size_t i = 0; i < before.getRobotCount(); ++i)
+        {
+            EXPECT_EQ(test::config(after, i, 0), test::config(before, i, 0));
+            EXPECT_EQ(test::config(after, i, after.getArrival(i)), test::config(before, i, before.getArrival(i)));
+        }
+    }
+}  // namespace
+
+TEST(PlanSmoother, RandomValidPlansStayValidAndNeverGetLonger)
+{
+    // Property test: jittery random walks of 8 discs (at most one timestep's motion per timestep), those the
+    // independent validator accepts, smoothed with and without the replanner: still valid, same endpoints, never
+    // a longer makespan or sum of costs; most get much shorter.
+    std::mt19937 rng(23);
+    const auto problem = scenarios::createMobileCircle(8);
+    const auto &si = problem.getSpaceInformation();
+    int smoothed = 0, shorter = 0;
+    for (int k = 0; k < 400 && smoothed < 16; ++k)
+    {
+        MultiRobotPlan plan = test::randomWalkPlan(*si, rng, 0.7 / si->getResolution());
+        const MultiRobotProblem own = test::problemOfPlan(si, plan);
+        if (!SolutionValidator(own).validate(plan).valid)
+            continue;
+        const MultiRobotPlan before = plan;
+        PlanSmoother smoother(si, static_cast<std::uint_fast32_t>(k + 1));
+        if (k % 2 == 0)
+            smoother.setReplanner(std::make_shared<PrioritizedSTRRTSolver>());
+        const SmoothingReport report = smoother.smooth(plan, ob::timedPlannerTerminationCondition(60.));
+        ++smoothed;
+        const auto check = SolutionValidator(own).validate(plan);
+        EXPECT_TRUE(check.valid) << "plan " << k << ": " << check.message;
+        expectSameEndpoints(before, plan);
+        EXPECT_LE(plan.getMakespan(), before.getMakespan());
+        EXPECT_LE(plan.getSumOfCosts(), before.getSumOfCosts());
+        EXPECT_EQ(report.makespanBefore, before.getMakespan());
+        EXPECT_EQ(report.makespanAfter, plan.getMakespan());
+        shorter += plan.getSumOfCosts() * 2 < before.getSumOfCosts();
+    }
+    EXPECT_GE(smoothed, 16);
+    EXPECT_GE(shorter, smoothed / 2);
+}
+
+TEST(PlanSmoother, RefusesAPlanWithAConflict)
+{
+    // Two discs swapping through each other on straight lines.
+    const MultiRobotProblem problem = test::twoDiscs({-2, 0}, {2, 0}, {2, 0}, {-2, 0});
+    MultiRobotPlan plan = test::straightLinePlan(problem);
+    PlanSmoother smoother(problem.getSpaceInformation(), 1);
+    EXPECT_THROW(smoother.smooth(plan, ob::timedPlannerTerminationCondition(10.)), ompl::Exception);
+}
+
+TEST(PlanSmoother, PlanQualityBoundsAreStraightLines)
+{
+    const MultiRobotProblem problem = test::twoDiscs({-2, 0}, {2, 0}, {0, -1}, {0, 3});
+    const MultiRobotPlan plan = test::straightLinePlan(problem);
+    const PlanQuality quality = PlanQuality::measure(*problem.getSpaceInformation(), plan);
+    EXPECT_EQ(quality.makespanBound, 512u);  // 4 units at 128 timesteps per unit
+    EXPECT_EQ(quality.sumOfCostsBound, 1024u);
+    EXPECT_EQ(quality.makespan, plan.getMakespan());
+    EXPECT_DOUBLE_EQ(quality.makespanRatio(), static_cast<double>(plan.getMakespan()) / 512.);
+}
+
+class SmoothedSolve : public testing::TestWithParam<std::tuple<std::string, std::size_t>>
+{
+};
+
+TEST_P(SmoothedSolve, ArcWithSmoothingReturnsAValidatedShorterPlanFromTheSamePlanning)
+{
+    // Families the smoother was not tuned on: the smoothed plan is validated, no longer than ARC's own plan, and
+    // ARC's planning is the same with smoothing on (its unsmoothed makespan is that of a run without smoothing).
+    const auto &[family, robots] = GetParam();
+    const MultiRobotProblem problem = scenarios::generateFamilyInstance(family, robots, 0);
+    const std::string profile = family == "planar_cell" ? "planar" : "mobile";
+    ARC plain(problem.getSpaceInformation()), smoothing(problem.getSpaceInformation());
+    for (ARC *arc : {&plain, &smoothing})
+    {
+        arc->setProfile(profile);
+        arc->setSeed(3);
+    }
+    smoothing.params().setParam("smooth", "0.5");
+    ASSERT_EQ(test::solveWith(plain, problem), ob::PlannerStatus::EXACT_SOLUTION);
+    ASSERT_EQ(test::solveWith(smoothing, problem), ob::PlannerStatus::EXACT_SOLUTION);
+    ASSERT_TRUE(smoothing.getSmoothingReport().has_value());
+    EXPECT_EQ(smoothing.getSmoothingReport()->makespanBefore, plain.getPlan().getMakespan());
+    EXPECT_EQ(property(smoothing, "makespan_unsmoothed INTEGER"), std::to_string(plain.getPlan().getMakespan()));
+    const MultiRobotPlan &plan = smoothing.getPlan();
+    const auto check = SolutionValidator(problem).validate(plan);
+    EXPECT_TRUE(check.valid) << check.message;
+    expectSameEndpoints(plain.getPlan(), plan);
+    EXPECT_LE(plan.getMakespan(), plain.getPlan().getMakespan());
+    EXPECT_LE(plan.getSumOfCosts(), plain.getPlan().getSumOfCosts());
+    EXPECT_EQ(property(smoothing, "makespan INTEGER"), std::to_string(plan.getMakespan()));
+    EXPECT_NE(property(smoothing, "makespan_ratio REAL"), "");
+    EXPECT_EQ(property(plain, "smoothing_time REAL"), "");
+    // The solution path handed to OMPL is the smoothed plan.
+    const auto &path = *smoothing.getProblemDefinition()->getSolutionPath()->as<ompl::geometric::PathGeometric>();
+    EXPECT_TRUE(test::pathFollowsPlan(*problem.getSpaceInformation(), path, plan));
+}
+
+INSTANTIATE_TEST_SUITE_P(Families, SmoothedSolve,
+                         testing::Values(std::make_tuple("ring", 8), std::make_tuple("crossing", 8),
+                                         std::make_tuple("field", 8), std::make_tuple("planar_cell", 4)));
+
+TEST(PlanSmoother, EveryPlannerOfOursSmoothsWhenAsked)
+{
+    const MultiRobotProblem problem = scenarios::createMobileCircle(8);
+    const auto si = problem.getSpaceInformation();
+    std::vector<ob::PlannerPtr> planners{std::make_shared<ORPARC>(si), std::make_shared<PrioritizedSTRRT>(si)};
+    for (const auto &planner : planners)
+    {
+        SCOPED_TRACE(planner->getName());
+        planner->params().setParam("seed", "2");
+        planner->params().setParam("smooth", "0.3");
+        ASSERT_EQ(test::solveWith(*planner, problem), ob::PlannerStatus::EXACT_SOLUTION);
+        const MultiRobotPlan &plan = dynamic_cast<ORPARC *>(planner.get())
+                                         ? static_cast<ORPARC &>(*planner).getPlan()
+                                         : static_cast<PrioritizedSTRRT &>(*planner).getPlan();
+        const auto check = SolutionValidator(problem).validate(plan);
+        EXPECT_TRUE(check.valid) << check.message;
+        EXPECT_NE(property(*planner, "smoothing_time REAL"), "");
+        EXPECT_EQ(property(*planner, "makespan INTEGER"), std::to_string(plan.getMakespan()));
+        EXPECT_LE(plan.getMakespan(), std::stoul(property(*planner, "makespan_unsmoothed INTEGER")));
+        const auto &path = *planner->getProblemDefinition()->getSolutionPath()->as<ompl::geometric::PathGeometric>();
+        EXPECT_TRUE(test::pathFollowsPlan(*si, path, plan));
+    }
+}
+
+TEST(PlanSmoother, BadBudgetsAreRefused)
+{
+    ARC arc(scenarios::createMobileCircle(2).getSpaceInformation());
+    EXPECT_THROW(arc.setSmoothing(-1.), ompl::Exception);
+    EXPECT_THROW(arc.setSmoothing(std::numeric_limits<double>::infinity()), ompl::Exception);
+    EXPECT_THROW(arc.params().setParam("smooth", "-2"), ompl::Exception);
+    EXPECT_EQ(arc.getSmoothing(), 0.);
+}
