@@ -9,6 +9,7 @@
 #include "ToolSupport.h"
 
 #include "ompl_parc/io/ScenarioFile.h"
+#include "ompl_parc/quality/PlanQuality.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 #include "ompl_parc/validation/SolutionValidator.h"
 
@@ -49,6 +50,10 @@ namespace
             {"time", "time REAL"},
             {"makespan", "makespan INTEGER"},
             {"sum_of_costs", "sum_of_costs INTEGER"},
+            {"makespan_ratio", "makespan_ratio REAL"},
+            {"sum_of_costs_ratio", "sum_of_costs_ratio REAL"},
+            {"smoothing_time", "smoothing_time REAL"},
+            {"makespan_unsmoothed", "makespan_unsmoothed INTEGER"},
             {"initial_time", "initial_wall_time REAL"},
             {"detection_time", "detection_wall_time REAL"},
             {"resolution_time", "resolution_wall_time REAL"},
@@ -79,8 +84,24 @@ namespace
         std::vector<ob::PlannerPtr> planners;
     };
 
-    /** \brief Per planner name, each run's (valid solution, time in seconds). */
-    using Tally = std::map<std::string, std::vector<std::pair<bool, double>>>;
+    /** \brief One run as the summary table counts it. */
+    struct RunOutcome
+    {
+        bool success;
+        double time;
+        /** \brief Makespan over its straight-line bound (PlanQuality), for a valid solution. */
+        double makespanRatio;
+    };
+
+    /** \brief Per planner name, each run's outcome. */
+    using Tally = std::map<std::string, std::vector<RunOutcome>>;
+
+    double median(std::vector<double> values)
+    {
+        std::sort(values.begin(), values.end());
+        const std::size_t n = values.size();
+        return n == 0 ? 0. : n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+    }
 
     /** \brief The problem of \e task with its planners, checked: every input error shows before any run. */
     Instance makeInstance(const tools::BenchmarkConfig &config, std::size_t task)
@@ -120,29 +141,29 @@ namespace
         return instance;
     }
 
-    /** \brief Success rate and median time (failures counted at the time limit) per planner, as a Markdown
-        table: the robustness view of an experiment over many instances. */
+    /** \brief Success rate, median time (failures counted at the time limit) and median makespan over its lower
+        bound (solved runs) per planner, as a Markdown table: the robustness and quality view of an experiment
+        over many instances. */
     void printSummary(const tools::BenchmarkConfig &config, const Tally &tally, std::ostream &out)
     {
-        out << "| planner | solved | median time (s, failures at " << config.getTimeLimit() << " s) |\n"
-            << "|---|---|---|\n";
+        out << "| planner | solved | median time (s, failures at " << config.getTimeLimit()
+            << " s) | median makespan / lower bound (solved) |\n"
+            << "|---|---|---|---|\n";
         for (const auto &entry : config.getPlanners())
         {
             const auto it = tally.find(entry.name);
             if (it == tally.end())
                 continue;
-            std::vector<double> times;
-            std::size_t solved = 0;
-            for (const auto &[success, time] : it->second)
+            std::vector<double> times, ratios;
+            for (const RunOutcome &run : it->second)
             {
-                solved += success ? 1 : 0;
-                times.push_back(success ? time : config.getTimeLimit());
+                times.push_back(run.success ? run.time : config.getTimeLimit());
+                if (run.success)
+                    ratios.push_back(run.makespanRatio);
             }
-            std::sort(times.begin(), times.end());
-            const std::size_t n = times.size();
-            const double median = n % 2 == 1 ? times[n / 2] : 0.5 * (times[n / 2 - 1] + times[n / 2]);
-            out << "| " << entry.name << " | " << solved << "/" << n << " | " << std::fixed << std::setprecision(3)
-                << median << " |\n";
+            out << "| " << entry.name << " | " << ratios.size() << "/" << times.size() << " | " << std::fixed
+                << std::setprecision(3) << median(times) << " | "
+                << (ratios.empty() ? std::string("-") : std::to_string(median(ratios)).substr(0, 5)) << " |\n";
         }
     }
 
@@ -199,8 +220,14 @@ namespace
                         const ValidationReport report = validator.validate(plan);
                         success = report.valid;
                         verdict = report.valid ? "valid" : report.message;
-                        run["makespan INTEGER"] = std::to_string(plan.getMakespan());
-                        run["sum_of_costs INTEGER"] = std::to_string(plan.getSumOfCosts());
+                        // Every planner's plan against the same bounds (our planners report them too).
+                        const PlanQuality quality = PlanQuality::measure(*si, plan);
+                        run["makespan INTEGER"] = std::to_string(quality.makespan);
+                        run["sum_of_costs INTEGER"] = std::to_string(quality.sumOfCosts);
+                        run["makespan_bound INTEGER"] = std::to_string(quality.makespanBound);
+                        run["sum_of_costs_bound INTEGER"] = std::to_string(quality.sumOfCostsBound);
+                        run["makespan_ratio REAL"] = std::to_string(quality.makespanRatio());
+                        run["sum_of_costs_ratio REAL"] = std::to_string(quality.sumOfCostsRatio());
                     }
                     catch (const std::exception &e)
                     {
@@ -217,7 +244,8 @@ namespace
                 run["success BOOLEAN"] = success ? "1" : "0";
                 run["validation STRING"] = verdict;
                 run["seed INTEGER"] = std::to_string(seedOf());
-                tally[planner->getName()].emplace_back(success, std::stod(run["time REAL"]));
+                tally[planner->getName()].push_back(
+                    {success, std::stod(run["time REAL"]), success ? std::stod(run["makespan_ratio REAL"]) : 0.});
 
                 const auto status =
                     ob::PlannerStatus(static_cast<ob::PlannerStatus::StatusType>(std::stoi(run["status ENUM"])));

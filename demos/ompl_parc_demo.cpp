@@ -209,7 +209,9 @@ int main(int argc, char **argv)
                     SvgOptions picture;
                     picture.animate = vm.count("picture-static") == 0;
                     SvgWriter::write(vm["picture"].as<std::string>(), problem, plan, picture);
-                    std::cout << "picture    " << vm["picture"].as<std::string>() << only << std::endl;
+                    std::cout << "picture    " << vm["picture"].as<std::string>() << only
+                              << (SvgWriter::isPlanar(problem) ? "" : std::string(" -- ") + SvgWriter::TOP_VIEW_NOTE)
+                              << std::endl;
                 }
                 if (vm.count("geometry"))
                 {

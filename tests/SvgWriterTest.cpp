@@ -162,3 +162,14 @@ TEST(SvgWriter, TheWellFormednessCheckRejectsBrokenDocuments)
     EXPECT_FALSE(wellFormed("<svg a=\"1></svg>"));
     EXPECT_FALSE(wellFormed("<svg> > </svg>"));
 }
+
+TEST(SvgWriter, ATopViewOfA3DProblemSaysSo)
+{
+    const MultiRobotProblem panda = scenarios::createScenario("panda_cage", 2);
+    const MultiRobotProblem discs = scenarios::createScenario("mobile_cross", 4);
+    EXPECT_FALSE(SvgWriter::isPlanar(panda));
+    EXPECT_TRUE(SvgWriter::isPlanar(discs));
+    EXPECT_TRUE(SvgWriter::isPlanar(scenarios::createScenario("planar_cross", 4)));
+    EXPECT_NE(SvgWriter::toSvg(panda, nullptr).find("3D problem: top view only"), std::string::npos);
+    EXPECT_EQ(SvgWriter::toSvg(discs, nullptr).find("class=\"note\""), std::string::npos);
+}

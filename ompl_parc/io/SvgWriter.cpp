@@ -198,7 +198,7 @@ namespace
                 << "<title>" << escape(problem_.getName()) << "</title>\n"
                 << "<rect x=\"" << num(lo.x()) << "\" y=\"" << num(-lo.y() - size.y()) << "\" width=\"" << num(size.x())
                 << "\" height=\"" << num(size.y()) << "\" fill=\"white\"/>\n"
-                << "<g transform=\"scale(1,-1)\">\n"  // world y points up
+                << note(lo, size) << "<g transform=\"scale(1,-1)\">\n"  // world y points up
                 << "<g class=\"obstacles\" fill=\"#888\" stroke=\"none\">\n"
                 << obstacles.str() << "</g>\n";
             for (std::size_t i = 0; i < si.getRobotCount(); ++i)
@@ -208,6 +208,19 @@ namespace
         }
 
       private:
+        /** The note over the top view of a problem that is not planar (empty for a planar one). */
+        std::string note(const Point &lo, const Point &size) const
+        {
+            if (ompl_parc::SvgWriter::isPlanar(problem_))
+                return "";
+            const double font = 0.025 * size.maxCoeff();
+            std::ostringstream text;
+            text << "<text class=\"note\" x=\"" << num(lo.x() + font) << "\" y=\"" << num(-lo.y() - size.y() + 1.5 * font)
+                 << "\" font-size=\"" << num(font) << "\" font-family=\"sans-serif\" fill=\"#a00\">"
+                 << escape(ompl_parc::SvgWriter::TOP_VIEW_NOTE) << "</text>\n";
+            return text.str();
+        }
+
         void include(const Point &p, double radius)
         {
             lo_ = lo_.cwiseMin(p - Point::Constant(radius));
@@ -323,6 +336,24 @@ namespace
         double lineWidth_{0.};
     };
 }  // namespace
+
+const char *const ompl_parc::SvgWriter::TOP_VIEW_NOTE =
+    "3D problem: top view only (z dropped). For 3D, write --geometry and draw it with scripts/draw_panda_cage.py";
+
+bool ompl_parc::SvgWriter::isPlanar(const MultiRobotProblem &problem)
+{
+    const auto &si = *problem.getSpaceInformation();
+    CollisionBody body;
+    for (std::size_t i = 0; i < si.getRobotCount(); ++i)
+        for (const auto *q : {&problem.getStart(i), &problem.getGoal(i)})
+        {
+            si.getRobot(i)->computeBody(q->data(), body);
+            for (std::size_t c = 0; c < body.size(); ++c)
+                if (body.az_[c] != 0. || body.bz_[c] != 0.)
+                    return false;
+        }
+    return true;
+}
 
 std::string ompl_parc::SvgWriter::toSvg(const MultiRobotProblem &problem, const MultiRobotPlan *plan,
                                         const SvgOptions &options)

@@ -30,13 +30,22 @@ namespace ompl_parc
         traced path of its last capsule's tip and, when animating, its moving body (<animate> of the
         circle's centre or the polyline's points). Obstacles are drawn as the convex hull of their
         footprint in <g class="obstacles">. Without a plan only starts and goals are drawn. Viewable in
-        any browser; static renderers show the robots at their starts. */
+        any browser; static renderers show the robots at their starts. A problem that is not planar (isPlanar())
+        is still drawn from above, under a note saying so and pointing to the 3D drawing (GeometryFile and
+        scripts/draw_panda_cage.py), so that nobody mistakes the top view for the whole picture. */
     class SvgWriter
     {
       public:
         /** \brief The SVG document for \e problem and (if not null) \e plan, a plan of its team. */
         static std::string toSvg(const MultiRobotProblem &problem, const MultiRobotPlan *plan,
                                  const SvgOptions &options = {});
+
+        /** \brief True if every robot's body at its start and goal lies in the plane z = 0 (2D robots; the obstacles of 2D
+            problems may have a height, which a top view drops harmlessly). */
+        static bool isPlanar(const MultiRobotProblem &problem);
+
+        /** \brief The note a picture of a problem that is not planar carries. */
+        static const char *const TOP_VIEW_NOTE;
 
         /** \brief Write toSvg() to \e path; throws ompl::Exception if unwritable. */
         static void write(const std::string &path, const MultiRobotProblem &problem, const MultiRobotPlan *plan,
