@@ -29,6 +29,15 @@ using namespace ompl_parc;
 
 namespace
 {
+    /** \brief The planner's PlannerData property \e name ("" if it has none). */
+    std::string propertyOf(const ompl::base::Planner &planner, const std::string &name)
+    {
+        ompl::base::PlannerData data(planner.getSpaceInformation());
+        planner.getPlannerData(data);
+        const auto found = data.properties.find(name);
+        return found == data.properties.end() ? std::string() : found->second;
+    }
+
     /** \brief Which OR-P-ARC instance the statistics lines describe, and how every instance ended. */
     void printRace(const ORPARC &orparc)
     {
@@ -41,6 +50,10 @@ namespace
                           ? "winner " + name
                           : "no winner, " + name + " went furthest")
                   << " of " << orparc.getRacerCount() << " instances (statistics below are its own)\n";
+        if (orparc.getObjective() != "first")
+            std::cout << "anytime    " << propertyOf(orparc, "anytime_rounds INTEGER") << " races, "
+                      << propertyOf(orparc, "improvements INTEGER") << " better plans by " << orparc.getObjective()
+                      << " (statistics: the last race's)\n";
         for (std::size_t k = 0; k < orparc.getRacerCount(); ++k)
         {
             const auto &s = orparc.getRacer(k).getStatistics();
@@ -79,15 +92,6 @@ namespace
         if (parallel != nullptr)
             std::cout << "parallel   " << parallel->batches << " batches, " << parallel->repairAttempts
                       << " repair attempts (" << parallel->cancelledAttempts << " cancelled)\n";
-    }
-
-    /** \brief The planner's PlannerData property \e name ("" if it has none). */
-    std::string propertyOf(const ompl::base::Planner &planner, const std::string &name)
-    {
-        ompl::base::PlannerData data(planner.getSpaceInformation());
-        planner.getPlannerData(data);
-        const auto found = data.properties.find(name);
-        return found == data.properties.end() ? std::string() : found->second;
     }
 
     /** \brief The smoothing line: what the planner's own smoothing did (from its properties), or, for a planner

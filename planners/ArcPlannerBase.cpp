@@ -16,11 +16,11 @@ namespace ob = ompl::base;
 namespace
 {
     /** The subproblem solvers of \e solvers, in the order they are tried. */
-    std::vector<ompl_parc::SubproblemSolverPtr> makeHierarchy(ompl_parc::ArcSettings::Solvers solvers)
+    std::vector<ompl_parc::SubproblemSolverPtr> makeHierarchy(const ompl_parc::ArcSettings &settings)
     {
         const auto prioritized = std::make_shared<ompl_parc::PrioritizedSTRRTSolver>();
-        const auto composite = std::make_shared<ompl_parc::CompositeRRTConnectSolver>();
-        switch (solvers)
+        const auto composite = std::make_shared<ompl_parc::CompositeRRTConnectSolver>(0., settings.shortenPatches);
+        switch (settings.solvers)
         {
             case ompl_parc::ArcSettings::Solvers::COMPOSITE:
                 return {composite};
@@ -62,6 +62,8 @@ ompl_parc::ArcPlannerBase::ArcPlannerBase(const ob::SpaceInformationPtr &si, con
                               "hierarchy,composite,prioritized,composite-first");
     declareParam<bool>("simplify_initial", this, &ArcPlannerBase::setSimplifyInitial,
                        &ArcPlannerBase::getSimplifyInitial, "0,1");
+    declareParam<bool>("shorten_patches", this, &ArcPlannerBase::setShortenPatches, &ArcPlannerBase::getShortenPatches,
+                       "0,1");
     declareParam<unsigned int>("seed", this, &ArcPlannerBase::setSeed, &ArcPlannerBase::getSeed);
 }
 
@@ -135,6 +137,12 @@ void ompl_parc::ArcPlannerBase::setSimplifyInitial(bool simplify)
 {
     options_.settings.simplifyInitial = simplify;
     options_.settings.explicitFields |= ArcSettings::SIMPLIFY_INITIAL;
+}
+
+void ompl_parc::ArcPlannerBase::setShortenPatches(bool shorten)
+{
+    options_.settings.shortenPatches = shorten;
+    options_.settings.explicitFields |= ArcSettings::SHORTEN_PATCHES;
 }
 
 void ompl_parc::ArcPlannerBase::setSeed(unsigned int seed)
@@ -250,7 +258,7 @@ ob::PlannerStatus ompl_parc::ArcPlannerBase::solveStages(const ob::PlannerTermin
         if (auto bad = readProblem())
             return *bad;
     RepairLoopOptions options = options_;
-    options.hierarchy = makeHierarchy(options.settings.solvers);
+    options.hierarchy = makeHierarchy(options.settings);
     loop_->configure(std::move(options));
     if (!loop_->isInitialised() && !loop_->planInitial(ptc))
     {

@@ -65,6 +65,8 @@ namespace ompl_parc
         std::string getSolvers() const { return ArcSettings::toString(getSettings().solvers); }
         void setSimplifyInitial(bool simplify);
         bool getSimplifyInitial() const { return getSettings().simplifyInitial; }
+        void setShortenPatches(bool shorten);
+        bool getShortenPatches() const { return getSettings().shortenPatches; }
         /** \brief Seconds of time-aware shortcutting (PlanSmoother) after a solution; 0 (the default): none. */
         void setSmoothing(double seconds) { smoothing_.setBudget(seconds); }
         double getSmoothing() const { return smoothing_.getBudget(); }

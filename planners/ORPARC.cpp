@@ -5,6 +5,7 @@
 
 #include <ompl/base/PlannerData.h>
 
+#include <algorithm>
 #include <map>
 #include <tuple>
 
@@ -20,6 +21,8 @@ ompl_parc::ORPARC::ORPARC(const ob::SpaceInformationPtr &si)
     race_.declareInstances(params());
     smoothing_.setReplanner([] { return std::make_shared<PrioritizedSTRRTSolver>(); });
     declareParam<unsigned int>("total_workers", this, &ORPARC::setTotalWorkers, &ORPARC::getTotalWorkers, "1:1:64");
+    declareParam<std::string>("objective", this, &ORPARC::setObjective, &ORPARC::getObjective,
+                              "first,makespan,sum_of_costs");
 }
 
 ompl_parc::ORPARC::~ORPARC() = default;
@@ -29,18 +32,26 @@ void ompl_parc::ORPARC::setTotalWorkers(unsigned int total)
     prototype_->setWorkers(race_.workersPerInstance(total));
 }
 
+void ompl_parc::ORPARC::setObjective(const std::string &objective)
+{
+    if (objective != "first" && objective != "makespan" && objective != "sum_of_costs")
+        throw ompl::Exception(getName(), "objective must be first, makespan or sum_of_costs (got '" + objective + "')");
+    objective_ = objective;
+}
+
 void ompl_parc::ORPARC::setup()
 {
     Planner::setup();
     if (pdef_ && !race_.hasRacers())
-        createRacers();
+        createRacers(prototype_->getSeed());
 }
 
 void ompl_parc::ORPARC::clear()
 {
     Planner::clear();
     race_.clear();
-    smoothed_.reset();
+    result_.reset();
+    resultSmoothing_.reset();
     smoothing_.clear();
 }
 
@@ -50,7 +61,7 @@ void ompl_parc::ORPARC::setProblemDefinition(const ob::ProblemDefinitionPtr &pde
     race_.clear();
 }
 
-void ompl_parc::ORPARC::createRacers()
+void ompl_parc::ORPARC::createRacers(unsigned int seed)
 {
     // The profile first: it sets the fields no other parameter was set for (ArcSettings::explicitFields),
     // and the prototype's values of all other parameters then make each racer equal to the prototype.
@@ -68,28 +79,72 @@ void ompl_parc::ORPARC::createRacers()
             racer->setSmoothing(0.);
             return racer;
         },
-        prototype_->getSeed(), pdef_);
+        seed, pdef_);
 }
 
 ob::PlannerStatus ompl_parc::ORPARC::solve(const ob::PlannerTerminationCondition &ptc)
 {
     checkValidity();
     if (!race_.hasRacers())
-        createRacers();
-    smoothed_.reset();
+        createRacers(prototype_->getSeed());
+    result_.reset();
+    resultSmoothing_.reset();
     smoothing_.clear();
-    const ob::PlannerStatus status = race_.run(ptc);
-    if (race_.getWinner() >= 0 && prototype_->getSmoothing() > 0.)
+    rounds_ = 1;
+    improvements_ = 0;
+    ob::PlannerStatus status = race_.run(ptc);
+    if (race_.getWinner() >= 0)
+        takeWinner(ptc);
+    if (objective_ == "first")
+        return status;
+    // Anytime: more rounds with fresh seeds until the termination condition; the best plan is the solution.
+    const unsigned int seed = prototype_->getSeed();
+    for (; !ptc(); ++rounds_)
     {
-        const PARC &winner = getRacer(race_.getWinner());
-        const auto mrsi = MultiRobotSpaceInformation::get(si_, getName());
-        smoothed_ = winner.getPlan();
-        smoothing_.setBudget(prototype_->getSmoothing());
-        smoothing_.apply(mrsi, *smoothed_, ptc, mixSeed(winner.getSeed(), 0x5300));
-        pdef_->clearSolutionPaths();
-        pdef_->addSolutionPath(smoothed_->toPathGeometric(mrsi), false, 0., getName());
+        pdef_->clearSolutionPaths();  // the race's winner is the ProblemDefinition's first solution
+        race_.clear();
+        createRacers(seed == 0 ? 0 : static_cast<unsigned int>(std::max<std::uint_fast32_t>(1, mixSeed(seed, rounds_))));
+        if (race_.run(ptc) == ob::PlannerStatus::EXACT_SOLUTION)
+            takeWinner(ptc);
     }
-    return status;
+    pdef_->clearSolutionPaths();
+    if (!result_)
+        return status;
+    const auto mrsi = MultiRobotSpaceInformation::get(si_, getName());
+    pdef_->addSolutionPath(result_->toPathGeometric(mrsi), false, 0., getName());
+    return ob::PlannerStatus::EXACT_SOLUTION;
+}
+
+void ompl_parc::ORPARC::takeWinner(const ob::PlannerTerminationCondition &ptc)
+{
+    const PARC &winner = getRacer(race_.getWinner());
+    const auto mrsi = MultiRobotSpaceInformation::get(si_, getName());
+    if (objective_ == "first" && prototype_->getSmoothing() <= 0.)
+        return;  // the winner's own plan and solution path are the answer
+    MultiRobotPlan plan = winner.getPlan();
+    smoothing_.setBudget(prototype_->getSmoothing());
+    smoothing_.apply(mrsi, plan, ptc, mixSeed(winner.getSeed(), 0x5300));
+    if (result_ && objectiveOf(plan) >= objectiveOf(*result_))
+        return;
+    result_ = std::move(plan);
+    resultSmoothing_ = smoothing_.getReport();
+    ++improvements_;
+    const auto path = result_->toPathGeometric(mrsi);
+    if (objective_ == "first")
+    {
+        pdef_->clearSolutionPaths();
+        pdef_->addSolutionPath(path, false, 0., getName());
+    }
+    else if (const auto &report = pdef_->getIntermediateSolutionCallback())
+    {
+        const std::vector<const ob::State *> states(path->getStates().begin(), path->getStates().end());
+        report(this, states, ob::Cost(static_cast<double>(objectiveOf(*result_))));
+    }
+}
+
+std::size_t ompl_parc::ORPARC::objectiveOf(const MultiRobotPlan &plan) const
+{
+    return objective_ == "sum_of_costs" ? plan.getSumOfCosts() : plan.getMakespan();
 }
 
 const ompl_parc::PARC &ompl_parc::ORPARC::getRacer(std::size_t k) const
@@ -121,8 +176,8 @@ const ompl_parc::PARC &ompl_parc::ORPARC::reported() const
 
 const ompl_parc::MultiRobotPlan &ompl_parc::ORPARC::getPlan() const
 {
-    if (smoothed_)
-        return *smoothed_;
+    if (result_)
+        return *result_;
     return race_.getWinner() >= 0 ? getRacer(race_.getWinner()).getPlan() : prototype_->getPlan();
 }
 
@@ -145,8 +200,17 @@ void ompl_parc::ORPARC::getPlannerData(ob::PlannerData &data) const
 {
     Planner::getPlannerData(data);
     reported().getPlannerData(data);
-    if (smoothed_)
-        smoothing_.addProperties(*MultiRobotSpaceInformation::get(si_, getName()), *smoothed_, data);
+    if (result_)
+    {
+        SmoothingStep step;
+        step.setReport(resultSmoothing_);
+        step.addProperties(*MultiRobotSpaceInformation::get(si_, getName()), *result_, data);
+    }
+    if (objective_ != "first")
+    {
+        data.properties["anytime_rounds INTEGER"] = std::to_string(rounds_);
+        data.properties["improvements INTEGER"] = std::to_string(improvements_);
+    }
     data.properties["reported_instance INTEGER"] = std::to_string(getReportedInstance());
     race_.addProperties(data);
 }

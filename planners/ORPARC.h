@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 
 namespace ompl_parc
 {
@@ -26,7 +27,13 @@ namespace ompl_parc
         getParallelStatistics(), getStatusMessage() and the top-level PlannerData properties are its own
         (P-ARC's complete set, \e reported_instance says which). getPlan() is the winner's plan. The
         PlannerData also holds \e instances, \e winner and every instance's status and properties
-        (instancek_status, instancek_conflicts, ...), so a timeout shows what each instance did. */
+        (instancek_status, instancek_conflicts, ...), so a timeout shows what each instance did.
+
+        With \e objective "makespan" or "sum_of_costs" (default "first": the paper's OR) it is an anytime planner:
+        it races again with fresh seeds (round r: mixSeed(seed, r)) until the termination condition, smooths each
+        round's winner (\e smooth), keeps the plan with the lowest objective and reports each improvement through
+        the ProblemDefinition's intermediate-solution callback (cost = the objective in timesteps). The statistics
+        are then the last round's; \e anytime_rounds and \e improvements count the rounds and the better plans. */
     class ORPARC : public ompl::base::Planner
     {
       public:
@@ -40,8 +47,9 @@ namespace ompl_parc
         void setProblemDefinition(const ompl::base::ProblemDefinitionPtr &pdef) override;
         void getPlannerData(ompl::base::PlannerData &data) const override;
 
-        /** \brief The winner's plan after a successful solve(), smoothed if \e smooth (the prototype's) is set; empty
-            otherwise. The instances never smooth: the winner's plan is smoothed once, after the race. */
+        /** \brief The winner's plan after a successful solve(), smoothed if \e smooth (the prototype's) is set (the
+            best one with an objective); empty otherwise. The instances never smooth: the winner's plan is smoothed
+            once, after its race. */
         const MultiRobotPlan &getPlan() const;
         /** \brief The reported instance's statistics (all zero before a solve). */
         const ArcStatistics &getStatistics() const;
@@ -64,6 +72,10 @@ namespace ompl_parc
             @{ */
         void setInstances(unsigned int instances) { race_.setInstances(instances); }
         unsigned int getInstances() const { return race_.getInstances(); }
+        /** \brief "first", "makespan" or "sum_of_costs" (see the class description); throws ompl::Exception
+            otherwise. */
+        void setObjective(const std::string &objective);
+        std::string getObjective() const { return objective_; }
         /** \brief Sets W_k = total / K; throws ompl::Exception unless total is a positive multiple of K. */
         void setTotalWorkers(unsigned int total);
         unsigned int getTotalWorkers() const { return getInstances() * getWorkers(); }
@@ -76,15 +88,25 @@ namespace ompl_parc
         unsigned int getSeed() const { return prototype_->getSeed(); }
 
       private:
-        void createRacers();
+        /** \brief The K racers, seeded from \e seed (as OrRace::createRacers()). */
+        void createRacers(unsigned int seed);
+        /** \brief After a won race: smooth a copy of the winner's plan; keep it (and report it) if it is the first or
+            better than the best so far by the objective. */
+        void takeWinner(const ompl::base::PlannerTerminationCondition &ptc);
+        /** \brief The objective's value of \e plan (the makespan for "first"). */
+        std::size_t objectiveOf(const MultiRobotPlan &plan) const;
         /** \brief The reported instance, or the prototype (all zero, empty plan) when there is none. */
         const PARC &reported() const;
 
         std::shared_ptr<PARC> prototype_;
         OrRace race_;
         SmoothingStep smoothing_;
-        /** \brief The smoothed copy of the winner's plan after a smoothed solve. */
-        std::optional<MultiRobotPlan> smoothed_;
+        std::string objective_{"first"};
+        /** \brief The plan solve() returns when it is not the winner's own: smoothed, or the best of several rounds. */
+        std::optional<MultiRobotPlan> result_;
+        /** \brief The smoothing report of result_. */
+        std::optional<SmoothingReport> resultSmoothing_;
+        std::size_t rounds_{0}, improvements_{0};
     };
 }  // namespace ompl_parc
 

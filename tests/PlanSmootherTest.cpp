@@ -13,7 +13,9 @@
 #include <gtest/gtest.h>
 #include <ompl/base/PlannerData.h>
 #include <ompl/util/Exception.h>
+#include <ompl/util/Time.h>
 
+#include <algorithm>
 #include <random>
 
 using namespace ompl_parc;
@@ -167,4 +169,41 @@ TEST(PlanSmoother, BadBudgetsAreRefused)
     EXPECT_THROW(arc.setSmoothing(std::numeric_limits<double>::infinity()), ompl::Exception);
     EXPECT_THROW(arc.params().setParam("smooth", "-2"), ompl::Exception);
     EXPECT_EQ(arc.getSmoothing(), 0.);
+}
+
+TEST(PlanSmoother, AnytimeOrParcKeepsTheBestPlanAndReportsEachImprovement)
+{
+    const MultiRobotProblem problem = scenarios::createMobileCircle(8);
+    const auto si = problem.getSpaceInformation();
+    ORPARC orparc(si);
+    orparc.setSeed(4);
+    orparc.params().setParam("objective", "makespan");
+    orparc.params().setParam("smooth", "0.2");
+    orparc.setProblemDefinition(problem.createProblemDefinition());
+    std::vector<double> reported;
+    orparc.getProblemDefinition()->setIntermediateSolutionCallback(
+        [&](const ob::Planner *planner, const std::vector<const ob::State *> &states, const ob::Cost cost)
+        {
+            EXPECT_EQ(planner, &orparc);
+            EXPECT_GT(states.size(), 1u);
+            reported.push_back(cost.value());
+        });
+    orparc.setup();
+    const double limit = 3.;
+    const auto started = ompl::time::now();
+    ASSERT_EQ(orparc.solve(ob::timedPlannerTerminationCondition(limit)), ob::PlannerStatus::EXACT_SOLUTION);
+    const double took = ompl::time::seconds(ompl::time::now() - started);
+    EXPECT_GE(took, limit);  // anytime: it races until the end
+    EXPECT_LT(took, limit + test::promptReturn());
+    ASSERT_FALSE(reported.empty());
+    EXPECT_TRUE(std::is_sorted(reported.rbegin(), reported.rend()));  // each report better than the last
+    EXPECT_EQ(static_cast<std::size_t>(reported.back()), orparc.getPlan().getMakespan());
+    EXPECT_GE(std::stoul(property(orparc, "anytime_rounds INTEGER")), 2u);
+    EXPECT_EQ(property(orparc, "improvements INTEGER"), std::to_string(reported.size()));
+    const auto check = SolutionValidator(problem).validate(orparc.getPlan());
+    EXPECT_TRUE(check.valid) << check.message;
+    const auto &path = *orparc.getProblemDefinition()->getSolutionPath()->as<ompl::geometric::PathGeometric>();
+    EXPECT_TRUE(test::pathFollowsPlan(*si, path, orparc.getPlan()));
+    EXPECT_EQ(orparc.getProblemDefinition()->getSolutionCount(), 1u);
+    EXPECT_THROW(orparc.setObjective("fastest"), ompl::Exception);
 }

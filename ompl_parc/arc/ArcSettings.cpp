@@ -40,6 +40,7 @@ void ompl_parc::ArcSettings::applyProfile(const std::string &name)
     take(SAMPLE_CAP, sampleCap, p.sampleCap);
     take(SOLVERS, solvers, p.solvers);
     take(SIMPLIFY_INITIAL, simplifyInitial, p.simplifyInitial);
+    take(SHORTEN_PATCHES, shortenPatches, p.shortenPatches);
 }
 
 std::vector<std::string> ompl_parc::ArcSettings::profileNames()

@@ -46,6 +46,10 @@ namespace ompl_parc
         Solvers solvers{Solvers::COMPOSITE_FIRST};
         /** \brief Shortcut the initial single-robot paths with OMPL's simplifier. */
         bool simplifyInitial{true};
+        /** \brief Shorten composite repair patches before they are spliced (OMPL's simplifier on the team's composite
+            path, bounded like the initial paths'): off by default, as in the paper; plan quality is PlanSmoother's
+            job after the solve (README: what shortening costs and gains). */
+        bool shortenPatches{false};
 
         /** \brief The fields, as bits of explicitFields. */
         enum Field : unsigned int
@@ -58,7 +62,8 @@ namespace ompl_parc
             MIN_BOUND_RANGE = 1u << 5,
             SAMPLE_CAP = 1u << 6,
             SOLVERS = 1u << 7,
-            SIMPLIFY_INITIAL = 1u << 8
+            SIMPLIFY_INITIAL = 1u << 8,
+            SHORTEN_PATCHES = 1u << 9
         };
         /** \brief The fields set one by one (planner parameters): a profile applied later keeps them, so a
             profile and explicit parameters give the same settings in any order (OMPL's ParamSet applies a

@@ -1,6 +1,7 @@
 #include "ompl_parc/planners/subproblem/CompositeRRTConnectSolver.h"
 
 #include "ompl_parc/model/MultiRobotPlan.h"
+#include "ompl_parc/util/OmplCompat.h"
 #include "ompl_parc/util/SeededPathSimplifier.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
 
@@ -45,7 +46,13 @@ bool ompl_parc::CompositeRRTConnectSolver::solve(const MultiRobotSpaceInformatio
 
     auto &path = *pdef->getSolutionPath()->as<og::PathGeometric>();
     if (simplify_)
-        SeededPathSimplifier(local, mixSeed(seed, 0x5eed)).simplify(path, ptc);
+    {
+        // Bounded like the initial paths: one pass of vertex reduction and of shortcutting (128 steps, stop after
+        // 32 without improvement), each checked on the team's space (robots and environment).
+        SeededPathSimplifier simplifier(local, mixSeed(seed, 0x5eed));
+        simplifier.reduceVertices(path);
+        compat::shortcutPath(simplifier, path, 128, 32);
+    }
     patch.paths = MultiRobotPlan::layTeamPath(*local, path);
     return true;
 }

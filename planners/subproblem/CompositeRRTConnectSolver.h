@@ -13,7 +13,8 @@ namespace ompl_parc
     {
       public:
         /** \brief \e range: RRTConnect's maximum motion (0: OMPL's default, 20% of the space extent);
-            \e simplify: shortcut the composite path with OMPL's simplifier before laying it on the grid. */
+            \e simplify: shorten the composite path with OMPL's simplifier, bounded (one pass of vertex reduction, 128
+            shortcut steps), before laying it on the grid (ArcSettings::shortenPatches). */
         explicit CompositeRRTConnectSolver(double range = 0., bool simplify = false);
 
         std::string getName() const override { return "composite-rrtc"; }
