@@ -207,3 +207,21 @@ TEST(PlanSmoother, AnytimeOrParcKeepsTheBestPlanAndReportsEachImprovement)
     EXPECT_EQ(orparc.getProblemDefinition()->getSolutionCount(), 1u);
     EXPECT_THROW(orparc.setObjective("fastest"), ompl::Exception);
 }
+
+TEST(PlanSmoother, SmoothingNeverOutlastsTheSolvesTerminationCondition)
+{
+    // A budget far past the limit: smoothing stops with the solve's termination condition, the plan it has by then
+    // is the solution, and it is valid.
+    const MultiRobotProblem problem = scenarios::createMobileCircle(16);
+    ARC arc(problem.getSpaceInformation());
+    arc.setSeed(1);
+    arc.setSmoothing(1000.);
+    const double limit = 1.5;
+    const auto started = ompl::time::now();
+    ASSERT_EQ(test::solveWith(arc, problem, limit), ob::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_LT(ompl::time::seconds(ompl::time::now() - started), limit + test::promptReturn());
+    ASSERT_TRUE(arc.getSmoothingReport().has_value());
+    EXPECT_LT(arc.getPlan().getMakespan(), arc.getSmoothingReport()->makespanBefore);
+    const auto check = SolutionValidator(problem).validate(arc.getPlan());
+    EXPECT_TRUE(check.valid) << check.message;
+}

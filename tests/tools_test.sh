@@ -62,6 +62,14 @@ expect 2 "parameter 'workers' must be a number from 1 to 64 (got '1000')" \
 expect 2 "parameter 'window' must be a number from 1 to 2000 (got '-1')" "$bin/ompl_parc_demo" --param window=-1
 expect 2 "time-limit must be a number from 0 to 1e+07 (got 'inf')" "$bin/ompl_parc_demo" --time-limit inf
 expect 2 "time-limit must be a number from 0 to 1e+07 (got '1e10')" "$bin/ompl_parc_demo" --time-limit 1e10
+# Smoothing (issue 16): on by default, the plan it returns validated; off leaves the planner's plan; a bad budget
+# is refused; OMPL's own planners are smoothed by the demo; a 3D picture says it is a top view.
+expect 0 "smoothing  .*before it, makespan" "$bin/ompl_parc_demo" --scenario mobile_circle --robots 8 --seed 2
+expect 0 "validated  yes" "$bin/ompl_parc_demo" --scenario mobile_circle --robots 8 --planner rrtconnect --smooth 0.5
+expect 0 "lower bound 1630" "$bin/ompl_parc_demo" --scenario mobile_circle --robots 8 --smooth 0
+expect 2 "smooth must be a number from 0 to 3600 (got '-1')" "$bin/ompl_parc_demo" --smooth -1
+expect 0 "3D problem: top view only" "$bin/ompl_parc_demo" --scenario panda_cage --robots 2 --param profile=panda \
+    --smooth 0 --picture "$tmp/panda.svg"
 expect 2 "seed must be a whole number from 0 to 4294967295 (got '4294967296')" "$bin/ompl_parc_demo" --seed 4294967296
 expect 2 "'/dev/zero' is not a regular file" "$bin/ompl_parc_demo" --scenario-file /dev/zero
 expect 2 "'$tmp' is not a regular file" "$bin/ompl_parc_validate" "$tmp"
