@@ -121,9 +121,9 @@ namespace
                                                ptc, ompl::base::timedPlannerTerminationCondition(budget)));
             report.shortcuts += report.compositeShortcuts + report.straightenings + report.replansKept;
         }
-        std::cout << "smoothing  " << report.seconds << " s (--smooth " << budget << "): " << report.shortcuts
-                  << " of " << report.attempts << " shortcuts and replans kept; before it, makespan "
-                  << report.makespanBefore << ", sum of costs " << report.sumOfCostsBefore << "\n";
+        std::cout << "smoothing  " << report.seconds << " s (--smooth " << budget << "): " << report.shortcuts << " of "
+                  << report.attempts << " shortcuts and replans kept; before it, makespan " << report.makespanBefore
+                  << ", sum of costs " << report.sumOfCostsBefore << "\n";
     }
 }  // namespace
 
@@ -244,7 +244,7 @@ int main(int argc, char **argv)
                       << " (bounds: each robot alone on a straight line)\n"
                       << "waypoints  " << plan.getPieceCount() << " pieces over the team\n"
                       << "validated  "
-                      << (!validate    ? std::string("skipped (--no-validate)")
+                      << (!validate      ? std::string("skipped (--no-validate)")
                           : report.valid ? "yes (" + std::to_string(checkTime) + " s)"
                                          : "NO: " + report.message)
                       << std::endl;

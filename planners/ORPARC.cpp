@@ -103,7 +103,8 @@ ob::PlannerStatus ompl_parc::ORPARC::solve(const ob::PlannerTerminationCondition
     {
         pdef_->clearSolutionPaths();  // the race's winner is the ProblemDefinition's first solution
         race_.clear();
-        createRacers(seed == 0 ? 0 : static_cast<unsigned int>(std::max<std::uint_fast32_t>(1, mixSeed(seed, rounds_))));
+        createRacers(seed == 0 ? 0
+                               : static_cast<unsigned int>(std::max<std::uint_fast32_t>(1, mixSeed(seed, rounds_))));
         if (race_.run(ptc) == ob::PlannerStatus::EXACT_SOLUTION)
             takeWinner(ptc);
     }

@@ -129,9 +129,9 @@ TEST(Arc, ParametersAreDeclaredAndStatisticsReported)
     const auto problem = scenarios::createPlanarCross(4);
     ARC arc(problem.getSpaceInformation());
     auto &params = arc.params();
-    for (const char *name : {"profile", "window", "growth", "growth_step", "endpoint_step", "bound_margin",
-                             "min_bound_range", "sample_cap", "solvers", "simplify_initial", "shorten_patches", "smooth",
-                             "seed"})
+    for (const char *name :
+         {"profile", "window", "growth", "growth_step", "endpoint_step", "bound_margin", "min_bound_range",
+          "sample_cap", "solvers", "simplify_initial", "shorten_patches", "smooth", "seed"})
         EXPECT_TRUE(params.hasParam(name)) << name;
     EXPECT_TRUE(params.setParam("profile", "planar"));
     EXPECT_EQ(arc.getWindow(), 100u);

@@ -118,4 +118,3 @@ void ompl_parc::Subproblem::fillContext(const MultiRobotSpaceInformation &si, co
         plan.getPath(r).appendRange(windowStart, windowEnd, otherPaths.back());
     }
 }
-

@@ -11,9 +11,8 @@ namespace
     template <typename Body>
     auto arraysOf(Body &body)
     {
-        return std::array{&body.ax_,      &body.ay_,      &body.az_,      &body.bx_,
-                          &body.by_,      &body.bz_,      &body.radius_,  &body.sphereX_,
-                          &body.sphereY_, &body.sphereZ_, &body.sphereRadius_};
+        return std::array{&body.ax_,     &body.ay_,      &body.az_,      &body.bx_,      &body.by_,          &body.bz_,
+                          &body.radius_, &body.sphereX_, &body.sphereY_, &body.sphereZ_, &body.sphereRadius_};
     }
     constexpr std::size_t ARRAYS = 11;
 }  // namespace

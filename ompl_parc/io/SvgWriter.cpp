@@ -215,9 +215,10 @@ namespace
                 return "";
             const double font = 0.025 * size.maxCoeff();
             std::ostringstream text;
-            text << "<text class=\"note\" x=\"" << num(lo.x() + font) << "\" y=\"" << num(-lo.y() - size.y() + 1.5 * font)
-                 << "\" font-size=\"" << num(font) << "\" font-family=\"sans-serif\" fill=\"#a00\">"
-                 << escape(ompl_parc::SvgWriter::TOP_VIEW_NOTE) << "</text>\n";
+            text << "<text class=\"note\" x=\"" << num(lo.x() + font) << "\" y=\""
+                 << num(-lo.y() - size.y() + 1.5 * font) << "\" font-size=\"" << num(font)
+                 << "\" font-family=\"sans-serif\" fill=\"#a00\">" << escape(ompl_parc::SvgWriter::TOP_VIEW_NOTE)
+                 << "</text>\n";
             return text.str();
         }
 

@@ -40,8 +40,8 @@ namespace ompl_parc
         static std::string toSvg(const MultiRobotProblem &problem, const MultiRobotPlan *plan,
                                  const SvgOptions &options = {});
 
-        /** \brief True if every robot's body at its start and goal lies in the plane z = 0 (2D robots; the obstacles of 2D
-            problems may have a height, which a top view drops harmlessly). */
+        /** \brief True if every robot's body at its start and goal lies in the plane z = 0 (2D robots; the obstacles of
+           2D problems may have a height, which a top view drops harmlessly). */
         static bool isPlanar(const MultiRobotProblem &problem);
 
         /** \brief The note a picture of a problem that is not planar carries. */

@@ -16,7 +16,7 @@
 namespace ob = ompl::base;
 
 ompl_parc::PlanSmoother::PlanSmoother(MultiRobotSpaceInformationPtr si, std::uint_fast32_t seed)
-  : si_(std::move(si)), alone_(si_->getRobotCount())
+    : si_(std::move(si)), alone_(si_->getRobotCount())
 {
     rng_.setLocalSeed(seed);
 }
@@ -26,7 +26,8 @@ std::size_t ompl_parc::PlanSmoother::getStallLimit() const
     return std::max<std::size_t>(2000, 200 * si_->getRobotCount());
 }
 
-ompl_parc::SmoothingReport ompl_parc::PlanSmoother::smooth(MultiRobotPlan &plan, const ob::PlannerTerminationCondition &ptc)
+ompl_parc::SmoothingReport ompl_parc::PlanSmoother::smooth(MultiRobotPlan &plan,
+                                                           const ob::PlannerTerminationCondition &ptc)
 {
     const auto started = ompl::time::now();
     const std::size_t n = si_->getRobotCount();
@@ -44,8 +45,8 @@ ompl_parc::SmoothingReport ompl_parc::PlanSmoother::smooth(MultiRobotPlan &plan,
     if (const auto conflict = detector_->findEarliest(plan))
         throw ompl::Exception("PlanSmoother", "only a conflict-free plan can be smoothed: robots " +
                                                   si_->getRobot(conflict->first)->getName() + " and " +
-                                                  si_->getRobot(conflict->second)->getName() + " collide at t=" +
-                                                  std::to_string(conflict->timestep));
+                                                  si_->getRobot(conflict->second)->getName() +
+                                                  " collide at t=" + std::to_string(conflict->timestep));
     bound_.resize(n);
     for (std::size_t i = 0; i < n; ++i)
         bound_[i] = PlanQuality::straightLineSteps(*si_, plan, i);

@@ -11,8 +11,8 @@ namespace ob = ompl::base;
 
 void ompl_parc::SmoothingStep::declareParameter(ob::Planner &planner)
 {
-    planner.params().declareParam<double>("smooth", [this](double seconds) { setBudget(seconds); },
-                                          [this] { return budget_; });
+    planner.params().declareParam<double>(
+        "smooth", [this](double seconds) { setBudget(seconds); }, [this] { return budget_; });
     planner.params()["smooth"].setRangeSuggestion("0.:0.1:3600.");
 }
 
@@ -53,9 +53,8 @@ void ompl_parc::SmoothingStep::addProperties(const MultiRobotSpaceInformation &s
     {
         p["smoothing_time REAL"] = std::to_string(report_->seconds);
         p["smoothing_attempts INTEGER"] = std::to_string(report_->attempts);
-        p["smoothing_shortcuts INTEGER"] =
-            std::to_string(report_->shortcuts + report_->compositeShortcuts + report_->straightenings +
-                           report_->replansKept);
+        p["smoothing_shortcuts INTEGER"] = std::to_string(report_->shortcuts + report_->compositeShortcuts +
+                                                          report_->straightenings + report_->replansKept);
         p["makespan_unsmoothed INTEGER"] = std::to_string(report_->makespanBefore);
         p["sum_of_costs_unsmoothed INTEGER"] = std::to_string(report_->sumOfCostsBefore);
     }
