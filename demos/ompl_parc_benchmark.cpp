@@ -162,8 +162,11 @@ namespace
                     ratios.push_back(run.makespanRatio);
             }
             out << "| " << entry.name << " | " << ratios.size() << "/" << times.size() << " | " << std::fixed
-                << std::setprecision(3) << median(times) << " | "
-                << (ratios.empty() ? std::string("-") : std::to_string(median(ratios)).substr(0, 5)) << " |\n";
+                << std::setprecision(3) << median(times) << " | ";
+            if (ratios.empty())
+                out << "- |\n";
+            else
+                out << std::setprecision(2) << median(ratios) << " |\n";
         }
     }
 

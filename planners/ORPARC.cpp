@@ -1,6 +1,7 @@
 #include "ompl_parc/planners/ORPARC.h"
 
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
+#include "ompl_parc/quality/PlanQuality.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
 
 #include <ompl/base/PlannerData.h>
@@ -59,6 +60,8 @@ void ompl_parc::ORPARC::setProblemDefinition(const ob::ProblemDefinitionPtr &pde
 {
     Planner::setProblemDefinition(pdef);
     race_.clear();
+    result_.reset();
+    resultSmoothing_.reset();
 }
 
 void ompl_parc::ORPARC::createRacers(unsigned int seed)
@@ -95,23 +98,30 @@ ob::PlannerStatus ompl_parc::ORPARC::solve(const ob::PlannerTerminationCondition
     ob::PlannerStatus status = race_.run(ptc);
     if (race_.getWinner() >= 0)
         takeWinner(ptc);
-    if (objective_ == "first")
-        return status;
+    if (objective_ == "first" || (status != ob::PlannerStatus::EXACT_SOLUTION && status != ob::PlannerStatus::TIMEOUT))
+        return status;  // an invalid start or goal, or a crash, is every race's
     // Anytime: more rounds with fresh seeds until the termination condition; the best plan is the solution.
     const unsigned int seed = prototype_->getSeed();
-    for (; !ptc(); ++rounds_)
+    const auto mrsi = MultiRobotSpaceInformation::get(si_, getName());
+    const auto optimal = [&]
+    {
+        const PlanQuality quality = PlanQuality::measure(*mrsi, *result_);
+        return objectiveOf(*result_) == (objective_ == "sum_of_costs" ? quality.sumOfCostsBound : quality.makespanBound);
+    };
+    for (; !ptc() && !(result_ && optimal()); ++rounds_)
     {
         pdef_->clearSolutionPaths();  // the race's winner is the ProblemDefinition's first solution
         race_.clear();
-        createRacers(seed == 0 ? 0
-                               : static_cast<unsigned int>(std::max<std::uint_fast32_t>(1, mixSeed(seed, rounds_))));
-        if (race_.run(ptc) == ob::PlannerStatus::EXACT_SOLUTION)
+        createRacers(seed == 0 ? 0 : static_cast<unsigned int>(mixSeed(seed, rounds_)));
+        const ob::PlannerStatus round = race_.run(ptc);
+        if (round == ob::PlannerStatus::EXACT_SOLUTION)
             takeWinner(ptc);
+        else if (round != ob::PlannerStatus::TIMEOUT)
+            break;
     }
     pdef_->clearSolutionPaths();
     if (!result_)
         return status;
-    const auto mrsi = MultiRobotSpaceInformation::get(si_, getName());
     pdef_->addSolutionPath(result_->toPathGeometric(mrsi), false, 0., getName());
     return ob::PlannerStatus::EXACT_SOLUTION;
 }

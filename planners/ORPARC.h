@@ -30,10 +30,12 @@ namespace ompl_parc
         (instancek_status, instancek_conflicts, ...), so a timeout shows what each instance did.
 
         With \e objective "makespan" or "sum_of_costs" (default "first": the paper's OR) it is an anytime planner:
-        it races again with fresh seeds (round r: mixSeed(seed, r)) until the termination condition, smooths each
-        round's winner (\e smooth), keeps the plan with the lowest objective and reports each improvement through
-        the ProblemDefinition's intermediate-solution callback (cost = the objective in timesteps). The statistics
-        are then the last round's; \e anytime_rounds and \e improvements count the rounds and the better plans. */
+        it races again with fresh seeds (round r: mixSeed(seed, r)) until the termination condition (or a plan that
+        meets its lower bound, PlanQuality), smooths each round's winner (\e smooth), keeps the plan with the lowest
+        objective and reports each improvement through the ProblemDefinition's intermediate-solution callback (cost =
+        the objective in timesteps). The statistics are then the last race's (which the termination condition may
+        have cut short); \e anytime_rounds counts the races started, \e improvements the better plans. A first race
+        that ends otherwise than with a solution or a timeout (an invalid start, a crash) ends the solve. */
     class ORPARC : public ompl::base::Planner
     {
       public:

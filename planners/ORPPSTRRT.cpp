@@ -36,7 +36,8 @@ ob::PlannerStatus ompl_parc::ORPPSTRRT::solve(const ob::PlannerTerminationCondit
     {
         const auto &winner = static_cast<const PrioritizedSTRRT &>(*race_.getRacers()[race_.getWinner()]);
         plan_ = winner.getPlan();
-        publishPlan(ptc, mixSeed(winner.getSeed(), 0x5300));
+        if (getSmoothing() > 0.)
+            publishPlan(ptc, mixSeed(winner.getSeed(), 0x5300));
     }
     return status;
 }

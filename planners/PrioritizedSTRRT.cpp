@@ -128,8 +128,11 @@ ob::PlannerStatus ompl_parc::PrioritizedSTRRT::solve(const ob::PlannerTerminatio
 
 void ompl_parc::PrioritizedSTRRT::publishPlan(const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed)
 {
-    smoothing_.apply(mrsi_, plan_, ptc, seed);
-    pdef_->clearSolutionPaths();
+    if (smoothing_.getBudget() > 0.)
+    {
+        smoothing_.apply(mrsi_, plan_, ptc, seed);
+        pdef_->clearSolutionPaths();  // the unsmoothed solution, if an OR race's winner put it there
+    }
     pdef_->addSolutionPath(plan_.toPathGeometric(mrsi_), false, 0., getName());
 }
 

@@ -55,8 +55,8 @@ namespace ompl_parc
         double getSmoothing() const { return smoothing_.getBudget(); }
 
       protected:
-        /** \brief Smooth plan_ (conflict-free) as \e smooth asks, drawing from \e seed, and make it the
-            ProblemDefinition's only solution. */
+        /** \brief Add plan_ to the ProblemDefinition; with a \e smooth budget, smoothed first (drawing from \e seed)
+            and as the only solution. Without one nothing is cleared: OR racers share the ProblemDefinition. */
         void publishPlan(const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed);
 
         MultiRobotPlan plan_;

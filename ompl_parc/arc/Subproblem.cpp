@@ -51,6 +51,7 @@ ompl::base::PlannerTerminationCondition ompl_parc::Subproblem::cappedTermination
     return ompl::base::plannerOrTerminationCondition(
         ptc, ompl::base::PlannerTerminationCondition([iterations, cap] { return ++*iterations > cap; }));
 }
+
 void ompl_parc::Subproblem::fillContext(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan)
 {
     others.clear();

@@ -14,7 +14,6 @@ namespace
         return std::array{&body.ax_,     &body.ay_,      &body.az_,      &body.bx_,      &body.by_,          &body.bz_,
                           &body.radius_, &body.sphereX_, &body.sphereY_, &body.sphereZ_, &body.sphereRadius_};
     }
-    constexpr std::size_t ARRAYS = 11;
 }  // namespace
 
 void ompl_parc::BodyTrack::append(const CollisionBody &body)
@@ -55,9 +54,9 @@ bool ompl_parc::BodyTrack::collides(std::size_t t, const CollisionBody &body, Co
     return bodiesCollide(body, scratch);
 }
 
-void ompl_parc::BodyTrack::reserve(std::size_t timesteps, std::size_t valuesPerBody)
+void ompl_parc::BodyTrack::reserve(std::size_t timesteps, std::size_t capsules)
 {
-    values_.reserve(timesteps * valuesPerBody);
+    values_.reserve(timesteps * capsules * ARRAYS);
     offsets_.reserve(timesteps + 1);
     spheresOnly_.reserve(timesteps);
     for (auto *v : {&centerX_, &centerY_, &centerZ_, &boundRadius_})

@@ -29,7 +29,11 @@ namespace ompl_parc
             only when the two bounding spheres overlap, which is bodiesCollide()'s first test: most pairs stop there. */
         bool collides(std::size_t t, const CollisionBody &body, CollisionBody &scratch) const;
 
-        void reserve(std::size_t timesteps, std::size_t valuesPerBody);
+        /** \brief Room for \e timesteps bodies of \e capsules capsules each. */
+        void reserve(std::size_t timesteps, std::size_t capsules);
+
+        /** \brief Arrays per capsule stored (ends, radius, bounding sphere). */
+        static constexpr std::size_t ARRAYS = 11;
 
       private:
         /** \brief Per body: its eleven capsule arrays one after another. */

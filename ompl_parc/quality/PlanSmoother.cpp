@@ -1,5 +1,6 @@
 #include "ompl_parc/quality/PlanSmoother.h"
 
+#include "ompl_parc/arc/ConflictResolver.h"
 #include "ompl_parc/quality/PlanQuality.h"
 #include "ompl_parc/util/StopSignal.h"
 
@@ -85,7 +86,7 @@ ompl_parc::SmoothingReport ompl_parc::PlanSmoother::smooth(MultiRobotPlan &plan,
             ++report.shortcuts;
         else if (blocker < n && tryShortcut(plan, {*robot, blocker}, t1, t2, 0, nullptr))
             ++report.compositeShortcuts;
-        else if (tryShortcut(plan, {*robot}, t1, t2, gain, nullptr))
+        else if (gain > 0 && tryShortcut(plan, {*robot}, t1, t2, gain, nullptr))
             ++report.straightenings;
         else
         {
@@ -198,6 +199,10 @@ bool ompl_parc::PlanSmoother::tryReplan(MultiRobotPlan &plan, std::size_t robot,
                                         const ob::PlannerTerminationCondition &ptc)
 {
     const std::size_t arrival = plan.getArrival(robot);
+    // The context keeps every other robot's body per timestep (DynamicObstacles): as ARC's resolver, no replan
+    // over a window that long (a fine resolution).
+    if (std::max(arrival, plan.getMakespan()) - t1 >= ConflictResolver::MAX_CONTEXT_TIMESTEPS)
+        return false;
     Subproblem sub;
     sub.robots = {robot};
     sub.windowStart = t1;

@@ -61,13 +61,13 @@ namespace ompl_parc
             conflict otherwise) in place until \e ptc fires or no attempt gains any more. */
         SmoothingReport smooth(MultiRobotPlan &plan, const ompl::base::PlannerTerminationCondition &ptc);
 
-        /** \brief Also replan, every REPLAN_PERIOD-th attempt, a robot's path from a timestep to its goal with
-            \e solver (a time-aware SubproblemSolver: prioritised ST-RRT) among the other robots' timed paths, kept
-            if it arrives earlier and is conflict-free: shortcuts only straighten what is there, a replan can take
-            another way or another order through a crossing. Null: shortcuts only. */
+        /** \brief Also replan, after every REPLAN_PERIOD attempts in a row without gain, a robot's path from a
+            timestep to its goal with \e solver (a time-aware SubproblemSolver: prioritised ST-RRT) among the other
+            robots' timed paths, kept if it arrives earlier and is conflict-free: shortcuts only straighten what is
+            there, a replan can take another way or another order through a crossing. Null: shortcuts only. */
         void setReplanner(SubproblemSolverPtr solver) { replanner_ = std::move(solver); }
 
-        /** \brief One attempt in this many is a replan (with a replanner). */
+        /** \brief Attempts in a row without gain before a replan (with a replanner). */
         static constexpr std::size_t REPLAN_PERIOD = 16;
         /** \brief The replanner's iteration cap per replan. */
         static constexpr unsigned int REPLAN_SAMPLES = 1000;

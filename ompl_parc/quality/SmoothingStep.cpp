@@ -2,6 +2,7 @@
 
 #include "ompl_parc/quality/PlanQuality.h"
 
+#include <ompl/util/Console.h>
 #include <ompl/util/Exception.h>
 
 #include <cmath>
@@ -30,10 +31,18 @@ void ompl_parc::SmoothingStep::apply(const MultiRobotSpaceInformationPtr &si, Mu
     if (budget_ <= 0.)
         return;
     const auto budget = ob::plannerOrTerminationCondition(ptc, ob::timedPlannerTerminationCondition(budget_));
-    PlanSmoother smoother(si, seed);
-    if (replanner_)
-        smoother.setReplanner(replanner_());
-    report_ = smoother.smooth(plan, budget);
+    try
+    {
+        PlanSmoother smoother(si, seed);
+        if (replanner_)
+            smoother.setReplanner(replanner_());
+        report_ = smoother.smooth(plan, budget);
+    }
+    catch (const std::exception &e)
+    {
+        // The solution stands: every change the smoother kept was checked, so the plan is as valid as before.
+        OMPL_WARN("smoothing skipped: %s", e.what());
+    }
 }
 
 void ompl_parc::SmoothingStep::addProperties(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan,

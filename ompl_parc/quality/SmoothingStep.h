@@ -35,7 +35,8 @@ namespace ompl_parc
         double getBudget() const { return budget_; }
 
         /** \brief With a budget, smooth \e plan (conflict-free) in place, drawing from \e seed, under \e ptc and the
-            budget; remembers the report. Without one, forgets the last report. */
+            budget; remembers the report. Without one, forgets the last report. A smoothing that fails (the plan
+            has a conflict, memory runs out) leaves no report and a warning: the solution stands as it is. */
         void apply(const MultiRobotSpaceInformationPtr &si, MultiRobotPlan &plan,
                    const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed);
 

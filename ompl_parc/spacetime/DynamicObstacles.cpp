@@ -35,7 +35,7 @@ void ompl_parc::DynamicObstacles::addPath(const Robot &other, const TimedPath &p
         cursor.get(t, q.data());
         other.computeBody(q.data(), body);
         if (t == 0)
-            track.reserve(path.getArrival() + 1, 11 * body.size() + 4);
+            track.reserve(path.getArrival() + 1, body.size());
         track.append(body);
     }
     tracks_.push_back(std::move(track));
