@@ -106,7 +106,8 @@ ob::PlannerStatus ompl_parc::ORPARC::solve(const ob::PlannerTerminationCondition
     const auto optimal = [&]
     {
         const PlanQuality quality = PlanQuality::measure(*mrsi, *result_);
-        return objectiveOf(*result_) == (objective_ == "sum_of_costs" ? quality.sumOfCostsBound : quality.makespanBound);
+        return objectiveOf(*result_) ==
+               (objective_ == "sum_of_costs" ? quality.sumOfCostsBound : quality.makespanBound);
     };
     for (; !ptc() && !(result_ && optimal()); ++rounds_)
     {
