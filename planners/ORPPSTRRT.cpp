@@ -32,7 +32,8 @@ ob::PlannerStatus ompl_parc::ORPPSTRRT::solve(const ob::PlannerTerminationCondit
         },
         getSeed(), pdef_);
     const ob::PlannerStatus status = race_.run(ptc);
-    if (race_.getWinner() >= 0)
+    solved_ = race_.getWinner() >= 0;
+    if (solved_)
     {
         const auto &winner = static_cast<const PrioritizedSTRRT &>(*race_.getRacers()[race_.getWinner()]);
         plan_ = winner.getPlan();

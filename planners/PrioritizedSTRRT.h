@@ -61,6 +61,9 @@ namespace ompl_parc
 
         MultiRobotPlan plan_;
         SmoothingStep smoothing_;
+        /** \brief Whether the last solve() found a plan (the PlannerData's \e solved, which OMPL's benchmark takes
+            over its own). */
+        bool solved_{false};
 
       private:
         /** \brief Apply \e settings if PrioritizedSTRRTSolver accepts them (it throws otherwise). */
@@ -70,7 +73,6 @@ namespace ompl_parc
         PrioritizedSTRRTSettings settings_;
         unsigned int seed_{0};
         unsigned int lastSeed_{0};
-        bool solved_{false};
     };
 }  // namespace ompl_parc
 

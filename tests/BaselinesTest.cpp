@@ -5,6 +5,7 @@
 #include "ompl_parc/scenarios/Scenarios.h"
 
 #include <gtest/gtest.h>
+#include <ompl/base/PlannerData.h>
 #include <ompl/util/Exception.h>
 
 #include <functional>
@@ -72,6 +73,11 @@ TEST_P(BaselineSolves, MobileCross4AndTheIndependentValidatorAgrees)
             : MultiRobotPlan::fromPathGeometric(*si, *pdef->getSolutionPath()->as<og::PathGeometric>());
     const ValidationReport report = SolutionValidator(problem).validate(plan);
     EXPECT_TRUE(report.valid) << report.message;
+    // A planner that reports "solved" must say so: OMPL's benchmark stores the planner's value over its own.
+    ob::PlannerData data(si);
+    planner->getPlannerData(data);
+    if (const auto solved = data.properties.find("solved BOOLEAN"); solved != data.properties.end())
+        EXPECT_EQ(solved->second, "1");
 
     // The planner runs again after clear(), as the benchmark does between runs.
     planner->clear();
