@@ -224,13 +224,7 @@ namespace
                         success = report.valid;
                         verdict = report.valid ? "valid" : report.message;
                         // Every planner's plan against the same bounds (our planners report them too).
-                        const PlanQuality quality = PlanQuality::measure(*si, plan);
-                        run["makespan INTEGER"] = std::to_string(quality.makespan);
-                        run["sum_of_costs INTEGER"] = std::to_string(quality.sumOfCosts);
-                        run["makespan_bound INTEGER"] = std::to_string(quality.makespanBound);
-                        run["sum_of_costs_bound INTEGER"] = std::to_string(quality.sumOfCostsBound);
-                        run["makespan_ratio REAL"] = std::to_string(quality.makespanRatio());
-                        run["sum_of_costs_ratio REAL"] = std::to_string(quality.sumOfCostsRatio());
+                        PlanQuality::measure(*si, plan).addProperties(run);
                     }
                     catch (const std::exception &e)
                     {

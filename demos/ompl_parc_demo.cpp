@@ -112,7 +112,7 @@ namespace
             report.makespanBefore = count("makespan_unsmoothed INTEGER");
             report.sumOfCostsBefore = count("sum_of_costs_unsmoothed INTEGER");
             report.attempts = count("smoothing_attempts INTEGER");
-            report.shortcuts = count("smoothing_shortcuts INTEGER");
+            report.shortcuts = count("smoothing_shortcuts INTEGER");  // every kind kept, as kept() counts them
         }
         else
         {
@@ -129,9 +129,8 @@ namespace
                 std::cout << "smoothing  skipped: " << e.what() << "\n";
                 return;
             }
-            report.shortcuts += report.compositeShortcuts + report.straightenings + report.replansKept;
         }
-        std::cout << "smoothing  " << report.seconds << " s (--smooth " << budget << "): " << report.shortcuts << " of "
+        std::cout << "smoothing  " << report.seconds << " s (--smooth " << budget << "): " << report.kept() << " of "
                   << report.attempts << " shortcuts and replans kept; before it, makespan " << report.makespanBefore
                   << ", sum of costs " << report.sumOfCostsBefore << "\n";
     }

@@ -307,5 +307,5 @@ void ompl_parc::ArcPlannerBase::getPlannerData(ob::PlannerData &data) const
         p[column + " INTEGER"] = std::to_string(wins);
     }
     if (loop_ && loop_->isInitialised())
-        smoothing_.addProperties(*mrsi_, getPlan(), data);
+        SmoothingStep::addProperties(*mrsi_, getPlan(), smoothing_.getReport(), data);
 }

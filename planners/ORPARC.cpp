@@ -213,11 +213,8 @@ void ompl_parc::ORPARC::getPlannerData(ob::PlannerData &data) const
     Planner::getPlannerData(data);
     reported().getPlannerData(data);
     if (result_)
-    {
-        SmoothingStep step;
-        step.setReport(resultSmoothing_);
-        step.addProperties(*MultiRobotSpaceInformation::get(si_, getName()), *result_, data);
-    }
+        SmoothingStep::addProperties(*MultiRobotSpaceInformation::get(si_, getName()), *result_, resultSmoothing_,
+                                     data);
     if (objective_ != "first")
     {
         data.properties["anytime_rounds INTEGER"] = std::to_string(rounds_);

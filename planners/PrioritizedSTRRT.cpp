@@ -142,5 +142,5 @@ void ompl_parc::PrioritizedSTRRT::getPlannerData(ob::PlannerData &data) const
     data.properties["seed INTEGER"] = std::to_string(lastSeed_);
     data.properties["priority_order STRING"] = getPriorityOrder();
     data.properties["solved BOOLEAN"] = solved_ ? "1" : "0";
-    smoothing_.addProperties(*mrsi_, plan_, data);
+    SmoothingStep::addProperties(*mrsi_, plan_, smoothing_.getReport(), data);
 }

@@ -20,14 +20,29 @@ ompl_parc::PlanQuality ompl_parc::PlanQuality::measure(const MultiRobotSpaceInfo
 }
 
 std::size_t ompl_parc::PlanQuality::straightLineSteps(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan,
-                                                      std::size_t robot)
+                                                      std::size_t robot, std::size_t from, std::size_t to)
 {
     const Robot &r = *si.getRobot(robot);
-    std::vector<double> start(r.getDimension()), goal(r.getDimension());
-    plan.getConfig(robot, 0, start.data());
-    plan.getConfig(robot, plan.getArrival(robot), goal.data());
-    ompl::base::ScopedState<> a(r.getStateSpace()), b(r.getStateSpace());
-    r.configToState(start.data(), a.get());
-    r.configToState(goal.data(), b.get());
-    return MultiRobotPlan::stepsFor(r.getStateSpace()->distance(a.get(), b.get()), plan.getResolution());
+    std::vector<double> a(r.getDimension()), b(r.getDimension());
+    plan.getConfig(robot, from, a.data());
+    plan.getConfig(robot, std::min(to, plan.getArrival(robot)), b.data());
+    return MultiRobotPlan::stepsFor(distance(r, a.data(), b.data()), plan.getResolution());
+}
+
+double ompl_parc::PlanQuality::distance(const Robot &robot, const double *a, const double *b)
+{
+    ompl::base::ScopedState<> sa(robot.getStateSpace()), sb(robot.getStateSpace());
+    robot.configToState(a, sa.get());
+    robot.configToState(b, sb.get());
+    return robot.getStateSpace()->distance(sa.get(), sb.get());
+}
+
+void ompl_parc::PlanQuality::addProperties(std::map<std::string, std::string> &properties) const
+{
+    properties["makespan INTEGER"] = std::to_string(makespan);
+    properties["sum_of_costs INTEGER"] = std::to_string(sumOfCosts);
+    properties["makespan_bound INTEGER"] = std::to_string(makespanBound);
+    properties["sum_of_costs_bound INTEGER"] = std::to_string(sumOfCostsBound);
+    properties["makespan_ratio REAL"] = std::to_string(makespanRatio());
+    properties["sum_of_costs_ratio REAL"] = std::to_string(sumOfCostsRatio());
 }

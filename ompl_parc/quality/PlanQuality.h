@@ -5,6 +5,8 @@
 #include "ompl_parc/model/MultiRobotSpaceInformation.h"
 
 #include <cstddef>
+#include <map>
+#include <string>
 
 namespace ompl_parc
 {
@@ -30,9 +32,19 @@ namespace ompl_parc
             robots' starts and goals. */
         static PlanQuality measure(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan);
 
-        /** \brief The straight-line bound of robot \e robot between its states at timestep 0 and at its arrival. */
+        /** \brief Timesteps of robot \e robot's straight motion from its state at timestep \e from to its state at
+            \e to: between 0 and its arrival (the default), its straight-line bound. */
         static std::size_t straightLineSteps(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan,
-                                             std::size_t robot);
+                                             std::size_t robot, std::size_t from = 0,
+                                             std::size_t to = static_cast<std::size_t>(-1));
+
+        /** \brief The distance between configurations \e a and \e b of \e robot in its state space: the metric the
+            bounds and the timestep grid use. */
+        static double distance(const Robot &robot, const double *a, const double *b);
+
+        /** \brief Write makespan, sum_of_costs, their bounds and ratios as PlannerData / benchmark properties
+            ("makespan INTEGER", ..., "sum_of_costs_ratio REAL"). */
+        void addProperties(std::map<std::string, std::string> &properties) const;
 
       private:
         static double ratio(std::size_t value, std::size_t bound)

@@ -81,7 +81,8 @@ ompl_parc::SmoothingReport ompl_parc::PlanSmoother::smooth(MultiRobotPlan &plan,
             continue;
         }
         std::size_t blocker = n;
-        const std::size_t gain = t2 - t1 - std::min(t2 - t1, straightSteps(plan, *robot, t1, t2));
+        const std::size_t gain =
+            t2 - t1 - std::min(t2 - t1, PlanQuality::straightLineSteps(*si_, plan, *robot, t1, t2));
         if (tryShortcut(plan, {*robot}, t1, t2, 0, &blocker))
             ++report.shortcuts;
         else if (blocker < n && tryShortcut(plan, {*robot, blocker}, t1, t2, 0, nullptr))
@@ -235,22 +236,9 @@ bool ompl_parc::PlanSmoother::motionValid(std::size_t robot, const double *from,
     return si->isValid(b.get()) && si->checkMotion(a.get(), b.get());
 }
 
-std::size_t ompl_parc::PlanSmoother::straightSteps(const MultiRobotPlan &plan, std::size_t robot, std::size_t t1,
-                                                   std::size_t t2)
+double ompl_parc::PlanSmoother::distance(std::size_t robot, const double *a, const double *b) const
 {
-    std::vector<double> a(plan.getDimension(robot)), b(a.size());
-    plan.getConfig(robot, t1, a.data());
-    plan.getConfig(robot, t2, b.data());
-    return MultiRobotPlan::stepsFor(distance(robot, a.data(), b.data()), plan.getResolution());
-}
-
-double ompl_parc::PlanSmoother::distance(std::size_t robot, const double *a, const double *b)
-{
-    const Robot &r = *si_->getRobot(robot);
-    ob::ScopedState<> sa(r.getStateSpace()), sb(r.getStateSpace());
-    r.configToState(a, sa.get());
-    r.configToState(b, sb.get());
-    return r.getStateSpace()->distance(sa.get(), sb.get());
+    return PlanQuality::distance(*si_->getRobot(robot), a, b);
 }
 
 double ompl_parc::PlanSmoother::pathLength(const MultiRobotPlan &plan, std::size_t robot, std::size_t t1,

@@ -26,6 +26,8 @@ namespace ompl_parc
         std::size_t attempts{0}, shortcuts{0}, compositeShortcuts{0}, straightenings{0};
         /** \brief Replans tried and kept (PlanSmoother::setReplanner()). */
         std::size_t replans{0}, replansKept{0};
+        /** \brief Changes kept, of every kind. */
+        std::size_t kept() const { return shortcuts + compositeShortcuts + straightenings + replansKept; }
         double seconds{0.};
     };
 
@@ -95,9 +97,6 @@ namespace ompl_parc
         bool keepIfClear(MultiRobotPlan &plan, const std::vector<std::size_t> &team, std::vector<TimedPath> changed,
                          std::size_t t1, std::size_t *blocker);
 
-        /** \brief Timesteps of \e robot's straight motion from its state at t1 to its state at t2. */
-        std::size_t straightSteps(const MultiRobotPlan &plan, std::size_t robot, std::size_t t1, std::size_t t2);
-
         /** \brief True if \e robot's straight motion from \e from to \e to is valid (bounds, self, environment). */
         bool motionValid(std::size_t robot, const double *from, const double *to);
 
@@ -105,7 +104,7 @@ namespace ompl_parc
         double pathLength(const MultiRobotPlan &plan, std::size_t robot, std::size_t t1, std::size_t t2);
 
         /** \brief Distance between two configurations of \e robot in its space. */
-        double distance(std::size_t robot, const double *a, const double *b);
+        double distance(std::size_t robot, const double *a, const double *b) const;
 
         /** \brief A robot worth shortcutting (see the class description), or none if all meet their bounds. */
         std::optional<std::size_t> pickRobot(const MultiRobotPlan &plan);

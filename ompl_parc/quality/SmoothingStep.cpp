@@ -46,25 +46,18 @@ void ompl_parc::SmoothingStep::apply(const MultiRobotSpaceInformationPtr &si, Mu
 }
 
 void ompl_parc::SmoothingStep::addProperties(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan,
-                                             ob::PlannerData &data) const
+                                             const std::optional<SmoothingReport> &smoothing, ob::PlannerData &data)
 {
     if (plan.getRobotCount() == 0 || plan.getPath(0).empty())
         return;
     auto &p = data.properties;
-    const PlanQuality quality = PlanQuality::measure(si, plan);
-    p["makespan INTEGER"] = std::to_string(quality.makespan);
-    p["sum_of_costs INTEGER"] = std::to_string(quality.sumOfCosts);
-    p["makespan_bound INTEGER"] = std::to_string(quality.makespanBound);
-    p["sum_of_costs_bound INTEGER"] = std::to_string(quality.sumOfCostsBound);
-    p["makespan_ratio REAL"] = std::to_string(quality.makespanRatio());
-    p["sum_of_costs_ratio REAL"] = std::to_string(quality.sumOfCostsRatio());
-    if (report_)
+    PlanQuality::measure(si, plan).addProperties(p);
+    if (smoothing)
     {
-        p["smoothing_time REAL"] = std::to_string(report_->seconds);
-        p["smoothing_attempts INTEGER"] = std::to_string(report_->attempts);
-        p["smoothing_shortcuts INTEGER"] = std::to_string(report_->shortcuts + report_->compositeShortcuts +
-                                                          report_->straightenings + report_->replansKept);
-        p["makespan_unsmoothed INTEGER"] = std::to_string(report_->makespanBefore);
-        p["sum_of_costs_unsmoothed INTEGER"] = std::to_string(report_->sumOfCostsBefore);
+        p["smoothing_time REAL"] = std::to_string(smoothing->seconds);
+        p["smoothing_attempts INTEGER"] = std::to_string(smoothing->attempts);
+        p["smoothing_shortcuts INTEGER"] = std::to_string(smoothing->kept());
+        p["makespan_unsmoothed INTEGER"] = std::to_string(smoothing->makespanBefore);
+        p["sum_of_costs_unsmoothed INTEGER"] = std::to_string(smoothing->sumOfCostsBefore);
     }
 }

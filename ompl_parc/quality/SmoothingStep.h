@@ -43,14 +43,12 @@ namespace ompl_parc
         /** \brief The last apply()'s report, if it smoothed. */
         const std::optional<SmoothingReport> &getReport() const { return report_; }
         void clear() { report_.reset(); }
-        /** \brief Make \e report the one addProperties() describes (a planner keeping the best of several plans). */
-        void setReport(std::optional<SmoothingReport> report) { report_ = std::move(report); }
 
         /** \brief Add \e plan's quality (makespan, sum_of_costs, their straight-line bounds and ratios, PlanQuality)
-            and, after smoothing, smoothing_time, shortcuts and the unsmoothed makespan and sum of costs. Nothing
-            for an empty plan. */
-        void addProperties(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan,
-                           ompl::base::PlannerData &data) const;
+            and, with a \e smoothing report (the one that made \e plan), smoothing_time, smoothing_attempts,
+            smoothing_shortcuts and the unsmoothed makespan and sum of costs. Nothing for an empty plan. */
+        static void addProperties(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan,
+                                  const std::optional<SmoothingReport> &smoothing, ompl::base::PlannerData &data);
 
       private:
         double budget_{0.};
