@@ -1,7 +1,5 @@
 #include "ompl_parc/arc/ConflictResolver.h"
 
-#include "ompl_parc/collision/CapsuleCollision.h"
-#include "ompl_parc/collision/CollisionBody.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
 #include "ompl_parc/util/StopSignal.h"
 
@@ -9,7 +7,6 @@
 #include <ompl/util/Time.h>
 
 #include <algorithm>
-#include <array>
 #include <climits>
 #include <cmath>
 
