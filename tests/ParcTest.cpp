@@ -1,6 +1,7 @@
 #include "TestProblems.h"
 
 #include "ompl_parc/arc/BatchDetector.h"
+#include "ompl_parc/arc/ConflictResolver.h"
 #include "ompl_parc/planners/ARC.h"
 #include "ompl_parc/planners/ORPARC.h"
 #include "ompl_parc/planners/PARC.h"
@@ -156,10 +157,21 @@ TEST(Parc, OneWorkerComputesWhatArcComputes)
             p->setSeed(9);
             ASSERT_EQ(test::solveWith(*p, problem), ob::PlannerStatus::EXACT_SOLUTION) << p->getName();
         }
+        EXPECT_TRUE(SolutionValidator(problem).validate(parc.getPlan()).valid);
+        // A seed fixes the plan only while no solver call reaches its time cap (ConflictResolver.h), which is at
+        // least MIN_CALL_SECONDS: here calls take milliseconds. Under ThreadSanitizer (10-20x slower, two tests
+        // at once) one may reach it in one run and not the other; there the equality is checked only if neither
+        // run had a call that long. Elsewhere the premise itself is asserted.
+        const bool uncapped = arc.getStatistics().longestSolverCall < ConflictResolver::MIN_CALL_SECONDS &&
+                              parc.getStatistics().longestSolverCall < ConflictResolver::MIN_CALL_SECONDS;
+#ifndef OMPL_PARC_SANITIZED
+        ASSERT_TRUE(uncapped) << scenario;
+#endif
+        if (!uncapped)
+            continue;
         for (std::size_t r = 0; r < 8; ++r)
             EXPECT_EQ(arc.getPlan().getRobotPath(r), parc.getPlan().getRobotPath(r)) << scenario << " robot " << r;
         EXPECT_EQ(arc.getStatistics().conflicts, parc.getStatistics().conflicts);
-        EXPECT_TRUE(SolutionValidator(problem).validate(parc.getPlan()).valid);
     }
 }
 
