@@ -1,29 +1,13 @@
 #include "ToolSupport.h"
 
+#include "ompl_parc/Version.h"
 #include "ompl_parc/io/ScenarioFile.h"
-#include "ompl_parc/planners/ARC.h"
-#include "ompl_parc/planners/EPRRTConnect.h"
-#include "ompl_parc/planners/ORPARC.h"
-#include "ompl_parc/planners/ORPPSTRRT.h"
-#include "ompl_parc/planners/ORRRTConnect.h"
-#include "ompl_parc/planners/PARC.h"
-#include "ompl_parc/planners/PrioritizedSTRRT.h"
 #include "ompl_parc/scenarios/Scenarios.h"
-
-#include <ompl/geometric/PathSimplifier.h>
-#include <ompl/geometric/planners/rrt/RRTConnect.h>
+#include "ompl_parc/util/ParseNumber.h"
 
 #include <ompl/util/Console.h>
 
-#include <algorithm>
-#include <charconv>
-#include <cmath>
-#include <cstdlib>
-#include <functional>
 #include <iostream>
-#include <map>
-#include <optional>
-#include <sstream>
 #include <stdexcept>
 
 namespace po = boost::program_options;
@@ -47,52 +31,6 @@ ompl_parc::MultiRobotProblem ompl_parc::tools::problemFromOptions(const po::vari
 
 namespace
 {
-    /** The bounds of a declared numeric parameter range "lo:step:hi" (or "lo:hi"), if \e range is one. */
-    std::optional<std::pair<double, double>> numericRange(const std::string &range)
-    {
-        const auto first = range.find(':'), last = range.rfind(':');
-        if (first == std::string::npos)
-            return std::nullopt;
-        char *end = nullptr;
-        const double lo = std::strtod(range.c_str(), &end);
-        if (end != range.c_str() + first)
-            return std::nullopt;
-        const double hi = std::strtod(range.c_str() + last + 1, &end);
-        if (end == range.c_str() + last + 1 || *end != '\0')
-            return std::nullopt;
-        return std::make_pair(lo, hi);
-    }
-
-    const std::map<std::string, ompl::base::PlannerAllocator> &planners()
-    {
-        static const std::map<std::string, ompl::base::PlannerAllocator> table = {
-            {"arc", [](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<ompl_parc::ARC>(si); }},
-            {"parc", [](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<ompl_parc::PARC>(si); }},
-            {"orparc",
-             [](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<ompl_parc::ORPARC>(si); }},
-            {"pp-st-rrt", [](const ompl::base::SpaceInformationPtr &si)
-             { return std::make_shared<ompl_parc::PrioritizedSTRRT>(si); }},
-            {"rrtconnect", [](const ompl::base::SpaceInformationPtr &si)
-             { return std::make_shared<ompl::geometric::RRTConnect>(si); }},
-            {"or-rrt-c",
-             [](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<ompl_parc::ORRRTConnect>(si); }},
-            {"ep-rrt-c",
-             [](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<ompl_parc::EPRRTConnect>(si); }},
-            // OR-EP-RRT-C is ORRRTConnect with EP-RRT-C instances: two workers each unless configured.
-            {"or-ep-rrt-c",
-             [](const ompl::base::SpaceInformationPtr &si)
-             {
-                 auto planner = std::make_shared<ompl_parc::ORRRTConnect>(si);
-                 planner->setName("OREPRRTConnect");
-                 planner->setWorkers(2);
-                 return planner;
-             }},
-            {"or-pp-st-rrt",
-             [](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<ompl_parc::ORPPSTRRT>(si); }},
-        };
-        return table;
-    }
-
     std::string join(const std::vector<std::string> &names)
     {
         std::string out;
@@ -113,97 +51,36 @@ void ompl_parc::tools::addProblemOptions(po::options_description &options)
         "scenario-file", po::value<std::string>(), "read the problem from this scenario file (JSON) instead");
 }
 
-std::vector<std::string> ompl_parc::tools::plannerNames()
+namespace
 {
-    std::vector<std::string> names;
-    for (const auto &entry : planners())
-        names.push_back(entry.first);
-    return names;
-}
-
-ompl::base::PlannerPtr ompl_parc::tools::createPlanner(const std::string &name,
-                                                       const ompl::base::SpaceInformationPtr &si,
-                                                       const std::vector<std::string> &params)
-{
-    const auto it = planners().find(name);
-    if (it == planners().end())
-        throw std::invalid_argument("unknown planner '" + name + "' (valid: " + join(plannerNames()) + ")");
-    auto planner = it->second(si);
-    // A named profile first, so that the parameters given with it override its values whatever their order.
-    std::vector<std::string> ordered(params);
-    std::stable_partition(ordered.begin(), ordered.end(),
-                          [](const std::string &assignment) { return assignment.rfind("profile=", 0) == 0; });
-    for (const auto &assignment : ordered)
+    /** \brief Thrown by parse() after --help or --version did their job: runTool() returns EXIT_SOLVED. */
+    struct Answered
     {
-        const auto eq = assignment.find('=');
-        if (eq == std::string::npos)
-            throw std::invalid_argument("--param needs key=value, got '" + assignment + "'");
-        setPlannerParameter(*planner, assignment.substr(0, eq), assignment.substr(eq + 1));
-    }
-    return planner;
-}
+    };
+}  // namespace
 
-void ompl_parc::tools::setPlannerParameter(ompl::base::Planner &planner, const std::string &key,
-                                           const std::string &value)
+std::string ompl_parc::tools::versionLine()
 {
-    if (!planner.params().hasParam(key))
-    {
-        std::vector<std::string> valid;
-        planner.params().getParamNames(valid);
-        throw std::invalid_argument("planner '" + planner.getName() + "' has no parameter '" + key +
-                                    "' (valid: " + join(valid) + ")");
-    }
-    if (const auto range = numericRange(planner.params().getParams().at(key)->getRangeSuggestion()))
-        parseReal(value, "parameter '" + key + "'", range->first, range->second);
-    if (!planner.params().setParam(key, value))
-        throw std::invalid_argument("bad value '" + value + "' for parameter '" + key + "'");
-}
-
-ompl_parc::MultiRobotPlan ompl_parc::tools::planOf(const ompl::base::Planner &planner,
-                                                   const MultiRobotSpaceInformationPtr &si, bool simplify)
-{
-    if (const auto *arc = dynamic_cast<const ArcPlannerBase *>(&planner))
-        return arc->getPlan();
-    if (const auto *orparc = dynamic_cast<const ORPARC *>(&planner))
-        return orparc->getPlan();
-    if (const auto *prioritized = dynamic_cast<const PrioritizedSTRRT *>(&planner))
-        return prioritized->getPlan();
-    auto &path = *planner.getProblemDefinition()->getSolutionPath()->as<ompl::geometric::PathGeometric>();
-    if (simplify)
-        ompl::geometric::PathSimplifier(si).simplify(path, 1.0);
-    return MultiRobotPlan::fromPathGeometric(*si, path);
-}
-
-std::uint64_t ompl_parc::tools::parseInteger(const std::string &text, const std::string &what, std::uint64_t lo,
-                                             std::uint64_t hi)
-{
-    std::uint64_t value = 0;
-    const char *end = text.data() + text.size();
-    const auto [ptr, error] = std::from_chars(text.data(), end, value);
-    if (text.empty() || error != std::errc() || ptr != end || value < lo || value > hi)
-        throw std::invalid_argument(what + " must be a whole number from " + std::to_string(lo) + " to " +
-                                    std::to_string(hi) + " (got '" + text + "')");
-    return value;
-}
-
-double ompl_parc::tools::parseReal(const std::string &text, const std::string &what, double lo, double hi)
-{
-    char *end = nullptr;
-    const double value = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) || value < lo || value > hi)
-    {
-        std::ostringstream message;
-        message << what << " must be a number from " << lo << " to " << hi << " (got '" << text << "')";
-        throw std::invalid_argument(message.str());
-    }
-    return value;
+    return std::string("ompl_parc ") + OMPL_PARC_VERSION + " (OMPL " + OMPL_PARC_OMPL_VERSION + ")";
 }
 
 po::variables_map ompl_parc::tools::parse(int argc, char **argv, const po::options_description &options,
                                           const po::positional_options_description &positional)
 {
+    po::options_description all(options);
+    all.add_options()("version", "print the version of ompl_parc (and of OMPL) and exit")("help,h", "show this help");
     po::variables_map vm;
-    po::store(po::command_line_parser(argc, argv).options(options).positional(positional).run(), vm);
+    po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
+    if (vm.count("help"))
+    {
+        std::cout << all << std::endl;
+        throw Answered();
+    }
+    if (vm.count("version"))
+    {
+        std::cout << versionLine() << std::endl;
+        throw Answered();
+    }
     po::notify(vm);
     return vm;
 }
@@ -214,6 +91,10 @@ int ompl_parc::tools::runTool(const std::string &tool, const std::function<int()
     try
     {
         return body();
+    }
+    catch (const Answered &)
+    {
+        return EXIT_SOLVED;
     }
     catch (const std::exception &e)
     {

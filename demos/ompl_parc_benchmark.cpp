@@ -5,10 +5,13 @@
    [problem] instances = N, one log per task (<name>_<task>.log), one CSV, and a table of success rate and
    median time per planner on stdout.
    Exit 0: all runs done and every solution valid; 1: some solution failed validation; 2: bad input. */
-#include "BenchmarkConfig.h"
+#include "ResultsCsv.h"
 #include "ToolSupport.h"
 
+#include "ompl_parc/Version.h"
 #include "ompl_parc/io/ScenarioFile.h"
+#include "ompl_parc/planners/setup/BenchmarkConfig.h"
+#include "ompl_parc/planners/setup/PlannerRegistry.h"
 #include "ompl_parc/quality/PlanQuality.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 #include "ompl_parc/validation/SolutionValidator.h"
@@ -23,6 +26,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <sstream>
 
 namespace ob = ompl::base;
 namespace po = boost::program_options;
@@ -30,6 +34,10 @@ using namespace ompl_parc;
 
 namespace
 {
+    /** \brief Seconds between two samples of the planners' progress properties (OMPL's default, 0.05 s, misses
+        most of a run that takes a tenth of a second). */
+    constexpr double PROGRESS_PERIOD = 0.01;
+
     /** \brief Threads a planner uses at once: total_workers if it declares it, else instances x workers. */
     unsigned int workerBudget(const ob::Planner &planner)
     {
@@ -41,30 +49,6 @@ namespace
         if (planner.params().hasParam("total_workers"))
             return value("total_workers");
         return value("instances") * value("workers");
-    }
-
-    /** \brief The CSV columns: what the plotting script needs, taken from the run's properties. */
-    const std::vector<std::pair<std::string, std::string>> &csvColumns()
-    {
-        static const std::vector<std::pair<std::string, std::string>> columns = {
-            {"time", "time REAL"},
-            {"makespan", "makespan INTEGER"},
-            {"sum_of_costs", "sum_of_costs INTEGER"},
-            {"makespan_ratio", "makespan_ratio REAL"},
-            {"sum_of_costs_ratio", "sum_of_costs_ratio REAL"},
-            {"smoothing_time", "smoothing_time REAL"},
-            {"makespan_unsmoothed", "makespan_unsmoothed INTEGER"},
-            {"initial_time", "initial_wall_time REAL"},
-            {"detection_time", "detection_wall_time REAL"},
-            {"resolution_time", "resolution_wall_time REAL"},
-            {"longest_call", "longest_solver_call REAL"},
-            {"projected_time", "projected_total_time REAL"},
-            {"batches", "batches INTEGER"},
-            {"first_batch_size", "first_batch_size INTEGER"},
-            {"average_batch_size", "average_batch_size REAL"},
-            {"memory", "memory REAL"},
-        };
-        return columns;
     }
 
     std::ofstream openForWriting(const std::filesystem::path &path)
@@ -104,7 +88,7 @@ namespace
     }
 
     /** \brief The problem of \e task with its planners, checked: every input error shows before any run. */
-    Instance makeInstance(const tools::BenchmarkConfig &config, std::size_t task)
+    Instance makeInstance(const BenchmarkConfig &config, std::size_t task)
     {
         Instance instance{
             config.getScenarioFile().empty()
@@ -127,7 +111,7 @@ namespace
                 throw std::invalid_argument(reason);
         for (const auto &entry : config.getPlanners())
         {
-            auto planner = tools::createPlanner(entry.type, problem.getSpaceInformation(), entry.params);
+            auto planner = PlannerRegistry::create(entry.type, problem.getSpaceInformation(), entry.params);
             planner->setName(entry.name);
             if (const unsigned int budget = workerBudget(*planner); budget > config.getWorkers())
                 throw std::invalid_argument(
@@ -144,7 +128,7 @@ namespace
     /** \brief Success rate, median time (failures counted at the time limit) and median makespan over its lower
         bound (solved runs) per planner, as a Markdown table: the robustness and quality view of an experiment
         over many instances. */
-    void printSummary(const tools::BenchmarkConfig &config, const Tally &tally, std::ostream &out)
+    void printSummary(const BenchmarkConfig &config, const Tally &tally, std::ostream &out)
     {
         out << "| planner | solved | median time (s, failures at " << config.getTimeLimit()
             << " s) | median makespan / lower bound (solved) |\n"
@@ -172,8 +156,8 @@ namespace
 
     /** \brief Run every planner of \e instance run_count times with OMPL's Benchmark, write its log to \e logPath
         and one CSV row per run, and tally the runs; returns the number of invalid solutions. */
-    std::size_t runInstance(const tools::BenchmarkConfig &config, const Instance &instance,
-                            const std::filesystem::path &logPath, std::ostream &csv, Tally &tally)
+    std::size_t runInstance(const BenchmarkConfig &config, const Instance &instance,
+                            const std::filesystem::path &logPath, tools::ResultsCsv &csv, Tally &tally)
     {
         const MultiRobotProblem &problem = instance.problem;
         const auto &si = problem.getSpaceInformation();
@@ -192,6 +176,7 @@ namespace
         benchmark.addExperimentParameter("base_seed", "INTEGER", std::to_string(config.getSeed()));
         benchmark.addExperimentParameter("worker_budget", "INTEGER", std::to_string(config.getWorkers()));
         benchmark.addExperimentParameter("task", "INTEGER", std::to_string(instance.task));
+        benchmark.addExperimentParameter("ompl_parc_version", "VARCHAR(32)", OMPL_PARC_VERSION);
         for (const auto &planner : planners)
             benchmark.addPlanner(planner);
 
@@ -219,7 +204,7 @@ namespace
                 {
                     try
                     {
-                        const MultiRobotPlan plan = tools::planOf(*planner, si, false);
+                        const MultiRobotPlan plan = PlannerRegistry::planOf(*planner, si, false);
                         const ValidationReport report = validator.validate(plan);
                         success = report.valid;
                         verdict = report.valid ? "valid" : report.message;
@@ -246,15 +231,10 @@ namespace
 
                 const auto status =
                     ob::PlannerStatus(static_cast<ob::PlannerStatus::StatusType>(std::stoi(run["status ENUM"])));
-                csv << instance.scenario << ',' << si->getRobotCount() << ',' << seedOf() << ',' << planner->getName()
-                    << ',' << typeOf[planner->getName()] << ',' << workerBudget(*planner) << ',' << (success ? 1 : 0)
-                    << ',' << status.asString();
-                for (const auto &column : csvColumns())
-                {
-                    const auto it = run.find(column.second);
-                    csv << ',' << (it == run.end() ? "" : it->second);
-                }
-                csv << std::endl;
+                csv.write(
+                    {instance.scenario, si->getRobotCount(), instance.task, seedOf(), workerBudget(*planner),
+                     planner->getName(), typeOf[planner->getName()], config.getTimeLimit(), success, status.asString()},
+                    run);
                 std::cerr << "[" << ++done << "/" << total << "] " << config.getProblemName() << " "
                           << planner->getName() << " seed " << seedOf() << ": "
                           << (success ? "solved" : status.asString()) << " in " << run["time REAL"] << " s"
@@ -265,9 +245,17 @@ namespace
         request.displayProgress = false;    // our progress line goes to stderr instead
         request.saveConsoleOutput = false;  // no console log file next to the results
         request.simplify = false;           // the planners' own solutions are what is compared
+        request.timeBetweenUpdates = PROGRESS_PERIOD;
         benchmark.benchmark(request);
-        if (!benchmark.saveResultsToFile(logPath.string().c_str()))
-            throw std::runtime_error("could not write '" + logPath.string() + "'");
+        // The log's first line names OMPL's version from its OMPL_VERSION macro, which Debian's OMPL leaves empty:
+        // the database would show none. The version CMake found goes there instead.
+        std::stringstream log;
+        benchmark.saveResultsToStream(log);
+        std::string text = log.str();
+        const std::string blank = "OMPL version \n";
+        if (text.rfind(blank, 0) == 0)
+            text.replace(0, blank.size(), std::string("OMPL version ") + OMPL_PARC_OMPL_VERSION + "\n");
+        openForWriting(logPath) << text;
         return invalid;
     }
 }  // namespace
@@ -280,19 +268,15 @@ int main(int argc, char **argv)
         {
             po::options_description options("Usage: ompl_parc_benchmark [options] CONFIG.cfg\nOptions");
             options.add_options()("config", po::value<std::string>(), "benchmark configuration (OMPL.app INI)")(
-                "check", "only check the config: load the problem, create every planner, then exit")("help,h",
-                                                                                                     "show this help");
+                "check", "only check the config: load the problem, create every planner, then exit");
             po::positional_options_description positional;
             positional.add("config", 1);
             const auto vm = tools::parse(argc, argv, options, positional);
-            if (vm.count("help") || !vm.count("config"))
-            {
-                std::cout << options << std::endl;
-                return static_cast<int>(vm.count("help") ? tools::EXIT_SOLVED : tools::EXIT_BAD_INPUT);
-            }
+            if (!vm.count("config"))
+                throw std::invalid_argument("no configuration file given (see --help)");
 
             // Everything that can be wrong with the input is checked before the first run.
-            const auto config = tools::BenchmarkConfig::read(vm["config"].as<std::string>());
+            const auto config = BenchmarkConfig::read(vm["config"].as<std::string>());
             std::vector<Instance> instances;
             for (std::size_t k = 0; k < config.getInstances(); ++k)
                 instances.push_back(makeInstance(config, config.getTask() + k));
@@ -318,11 +302,8 @@ int main(int argc, char **argv)
             for (const auto &instance : instances)
                 openForWriting(logPath(instance));  // fail now rather than after hours of runs
             const std::filesystem::path csvPath = folder / (config.getProblemName() + ".csv");
-            std::ofstream csv = openForWriting(csvPath);
-            csv << "scenario,robots,seed,planner,type,workers,success,status";
-            for (const auto &column : csvColumns())
-                csv << ',' << column.first;
-            csv << '\n';
+            std::ofstream csvFile = openForWriting(csvPath);
+            tools::ResultsCsv csv(csvFile);
 
             Tally tally;
             std::size_t invalid = 0;

@@ -11,25 +11,40 @@
 #include "ompl_parc/planners/ArcPlannerBase.h"
 #include "ompl_parc/planners/ORPARC.h"
 #include "ompl_parc/planners/PARC.h"
+#include "ompl_parc/planners/setup/PlannerRegistry.h"
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
 #include "ompl_parc/quality/PlanQuality.h"
 #include "ompl_parc/quality/PlanSmoother.h"
+#include "ompl_parc/util/InnerPlannerLog.h"
+#include "ompl_parc/util/ParseNumber.h"
 #include "ompl_parc/util/StopSignal.h"
 #include "ompl_parc/validation/SolutionValidator.h"
 
 #include <ompl/base/PlannerData.h>
+#include <ompl/util/Console.h>
 #include <ompl/util/Exception.h>
 #include <ompl/util/RandomNumbers.h>
 #include <ompl/util/Time.h>
 
 #include <iomanip>
 #include <iostream>
+#include <optional>
 
 namespace po = boost::program_options;
 using namespace ompl_parc;
 
 namespace
 {
+    /** \brief The planner's live progress if it is of the ARC family (theirs may be read while they plan). */
+    const ArcProgress *progressOf(const ompl::base::Planner &planner)
+    {
+        if (const auto *arc = dynamic_cast<const ArcPlannerBase *>(&planner))
+            return &arc->getProgress();
+        if (const auto *orparc = dynamic_cast<const ORPARC *>(&planner))
+            return &orparc->getProgress();
+        return nullptr;
+    }
+
     /** \brief The planner's PlannerData property \e name ("" if it has none). */
     std::string propertyOf(const ompl::base::Planner &planner, const std::string &name)
     {
@@ -145,7 +160,7 @@ int main(int argc, char **argv)
             po::options_description options("Usage: ompl_parc_demo [options]\nOptions");
             tools::addProblemOptions(options);
             std::string plannerHelp = "planner:";
-            for (const auto &n : tools::plannerNames())
+            for (const auto &n : PlannerRegistry::names())
                 plannerHelp += " " + n;
             options.add_options()("planner", po::value<std::string>()->default_value("arc"), plannerHelp.c_str())(
                 "param", po::value<std::vector<std::string>>()->composing(),
@@ -162,19 +177,23 @@ int main(int argc, char **argv)
                 "picture-static", "make --picture a static snapshot: starts, goals and traced paths")(
                 "geometry", po::value<std::string>(),
                 "write the world-frame shapes of the problem and solution (JSON, for scripts/draw_panda_cage.py)")(
-                "help,h", "show this help");
+                "verbose", "log the planner's stages (OMPL's INFO level)")(
+                "debug", "log every conflict and repair, and the inner planners' messages too (OMPL's DEBUG level)")(
+                "quiet", "no live progress line and no log but errors");
             const auto vm = tools::parse(argc, argv, options);
-            if (vm.count("help"))
-            {
-                std::cout << options << std::endl;
-                return static_cast<int>(tools::EXIT_SOLVED);
-            }
+            if (vm.count("verbose") + vm.count("debug") + vm.count("quiet") > 1)
+                throw std::invalid_argument("give one of --verbose, --debug and --quiet");
+            ompl::msg::setLogLevel(vm.count("debug")     ? ompl::msg::LOG_DEBUG
+                                   : vm.count("verbose") ? ompl::msg::LOG_INFO
+                                   : vm.count("quiet")   ? ompl::msg::LOG_ERROR
+                                                         : ompl::msg::LOG_WARN);
+            InnerPlannerLog::setShown(vm.count("debug") != 0);
             // Longer than about four months, a limit is no limit, and OMPL's clock overflows near 1e10 s.
-            const double timeLimit = tools::parseReal(vm["time-limit"].as<std::string>(), "--time-limit", 0., 1e7);
+            const double timeLimit = parseReal(vm["time-limit"].as<std::string>(), "--time-limit", 0., 1e7);
             if (!(timeLimit > 0.))
                 throw std::invalid_argument("--time-limit must be positive");
             const auto seed =
-                static_cast<std::uint32_t>(tools::parseInteger(vm["seed"].as<std::string>(), "--seed", 0, UINT32_MAX));
+                static_cast<std::uint32_t>(parseInteger(vm["seed"].as<std::string>(), "--seed", 0, UINT32_MAX));
             ompl::RNG::setSeed(seed);
 
             const MultiRobotProblem problem = tools::problemFromOptions(vm);
@@ -184,32 +203,34 @@ int main(int argc, char **argv)
             auto pdef = problem.createProblemDefinition();
             const auto params =
                 vm.count("param") ? vm["param"].as<std::vector<std::string>>() : std::vector<std::string>{};
-            auto planner = tools::createPlanner(vm["planner"].as<std::string>(), si, params);
+            auto planner = PlannerRegistry::create(vm["planner"].as<std::string>(), si, params);
             if (vm.count("workers"))
             {
                 if (!planner->params().hasParam("workers"))
                     throw std::invalid_argument("--workers needs a parallel planner (parc); '" +
                                                 vm["planner"].as<std::string>() + "' has no 'workers' parameter");
-                tools::setPlannerParameter(*planner, "workers", vm["workers"].as<std::string>());
+                PlannerRegistry::setParameter(*planner, "workers", vm["workers"].as<std::string>());
             }
             // Planners of ours smooth inside solve() (their 'smooth' parameter); OMPL's are smoothed here.
-            const double smooth = tools::parseReal(vm["smooth"].as<std::string>(), "--smooth", 0., 3600.);
+            const double smooth = parseReal(vm["smooth"].as<std::string>(), "--smooth", 0., 3600.);
             const bool plannerSmooths = planner->params().hasParam("smooth");
             if (plannerSmooths)
-                tools::setPlannerParameter(*planner, "smooth", vm["smooth"].as<std::string>());
+                PlannerRegistry::setParameter(*planner, "smooth", vm["smooth"].as<std::string>());
             planner->setProblemDefinition(pdef);
             planner->setup();
 
             std::cout << "scenario   " << problem.getName() << ", " << si->getRobotCount() << " robots\n"
                       << "planner    " << planner->getName() << "\n";
-            tools::ProgressLine progress("planning...");
+            std::optional<tools::ProgressLine> progress;
+            if (vm.count("quiet") == 0)
+                progress.emplace("planning...", progressOf(*planner), si->getRobotCount());
             const ompl::time::point start = ompl::time::now();
             // The scope lets OMPL's own planners (rrtconnect) stop inside a long motion check too.
             const auto ptc = ompl::base::timedPlannerTerminationCondition(timeLimit);
             const StopSignal::Scope scope(ptc);
             const auto status = planner->solve(ptc);
             const double planTime = ompl::time::seconds(ompl::time::now() - start);
-            progress.stop();
+            progress.reset();
             std::cout << "status     " << status.asString() << " after " << std::fixed << std::setprecision(3)
                       << planTime << " s\n";
             // Smoothing is part of solve(); the stage line shows the planning before it.
@@ -239,7 +260,7 @@ int main(int argc, char **argv)
                 return static_cast<int>(tools::EXIT_FAILED);
             }
 
-            MultiRobotPlan plan = tools::planOf(*planner, si, true);
+            MultiRobotPlan plan = PlannerRegistry::planOf(*planner, si, true);
             printSmoothing(*planner, plannerSmooths, smooth, seed, ptc, plan);
             const PlanQuality quality = PlanQuality::measure(*si, plan);
             const bool validate = vm.count("no-validate") == 0;

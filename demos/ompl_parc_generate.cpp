@@ -7,6 +7,7 @@
 
 #include "ompl_parc/io/ScenarioFile.h"
 #include "ompl_parc/scenarios/Scenarios.h"
+#include "ompl_parc/util/ParseNumber.h"
 
 #include <filesystem>
 #include <iostream>
@@ -24,22 +25,15 @@ int main(int argc, char **argv)
             tools::addProblemOptions(options);
             options.add_options()("count", po::value<std::string>()->default_value("1"),
                                   "number of instances: tasks --task, --task + 1, ...")(
-                "out-dir", po::value<std::string>(), "write the scenario files into this folder (created)")(
-                "help,h", "show this help");
+                "out-dir", po::value<std::string>(), "write the scenario files into this folder (created)");
             const auto vm = tools::parse(argc, argv, options);
-            if (vm.count("help"))
-            {
-                std::cout << options << std::endl;
-                return static_cast<int>(tools::EXIT_SOLVED);
-            }
             if (!vm.count("out-dir"))
                 throw std::invalid_argument("no --out-dir given (see --help)");
             if (vm.count("scenario-file"))
                 throw std::invalid_argument("--scenario-file: this tool writes scenario files, give --scenario");
-            const std::size_t count = tools::parseInteger(vm["count"].as<std::string>(), "--count", 1, 100000);
-            const std::size_t first = tools::parseInteger(vm["task"].as<std::string>(), "--task", 0, tools::MAX_TASK);
-            const std::size_t robots =
-                tools::parseInteger(vm["robots"].as<std::string>(), "--robots", 1, tools::MAX_ROBOTS);
+            const std::size_t count = parseInteger(vm["count"].as<std::string>(), "--count", 1, 100000);
+            const std::size_t first = parseInteger(vm["task"].as<std::string>(), "--task", 0, MAX_TASK);
+            const std::size_t robots = parseInteger(vm["robots"].as<std::string>(), "--robots", 1, MAX_ROBOTS);
             const std::filesystem::path folder = vm["out-dir"].as<std::string>();
             std::error_code error;
             std::filesystem::create_directories(folder, error);

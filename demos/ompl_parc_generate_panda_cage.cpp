@@ -8,6 +8,7 @@
 #include "ompl_parc/io/ScenarioFile.h"
 #include "ompl_parc/scenarios/ConflictingPairs.h"
 #include "ompl_parc/scenarios/PandaCage.h"
+#include "ompl_parc/util/ParseNumber.h"
 
 #include <ompl/util/Time.h>
 
@@ -30,21 +31,15 @@ int main(int argc, char **argv)
                 "team size to generate (repeatable; default 2, 4, 8 and 16)")(
                 "task", po::value<std::vector<std::string>>()->composing(),
                 "task to generate (repeatable; default all)")("seed", po::value<std::string>()->default_value("1"),
-                                                              "ARC seed parameter of the conflict report")(
-                "help,h", "show this help");
+                                                              "ARC seed parameter of the conflict report");
             const auto vm = tools::parse(argc, argv, options);
-            if (vm.count("help"))
-            {
-                std::cout << options << std::endl;
-                return static_cast<int>(tools::EXIT_SOLVED);
-            }
             if (!vm.count("out-dir"))
                 throw std::invalid_argument("no --out-dir given (see --help)");
             const auto numbers = [&vm](const char *name, std::uint64_t hi)
             {
                 std::vector<std::size_t> values;
                 for (const auto &text : vm[name].as<std::vector<std::string>>())
-                    values.push_back(tools::parseInteger(text, std::string("--") + name, 0, hi));
+                    values.push_back(parseInteger(text, std::string("--") + name, 0, hi));
                 return values;
             };
             // The generator's own checks name the team sizes and tasks it has; these bounds only stop wrapping.
@@ -54,7 +49,7 @@ int main(int argc, char **argv)
             if (vm.count("task"))
                 tasks = numbers("task", 1000);
             const auto seed =
-                static_cast<unsigned int>(tools::parseInteger(vm["seed"].as<std::string>(), "--seed", 0, UINT32_MAX));
+                static_cast<unsigned int>(parseInteger(vm["seed"].as<std::string>(), "--seed", 0, UINT32_MAX));
             for (std::size_t robots : teams)
                 for (std::size_t task : tasks)
                 {

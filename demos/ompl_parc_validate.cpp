@@ -3,6 +3,7 @@
 #include "ToolSupport.h"
 
 #include "ompl_parc/io/SolutionFile.h"
+#include "ompl_parc/util/ParseNumber.h"
 #include "ompl_parc/validation/SolutionValidator.h"
 
 #include <ompl/util/Time.h>
@@ -23,15 +24,10 @@ int main(int argc, char **argv)
             options.add_options()("substeps", po::value<std::string>()->default_value("4"),
                                   "fewest samples per timestep interval between timesteps (1: timesteps only)")(
                 "threads", po::value<std::string>()->default_value("0"), "threads of the check (0: one per core)")(
-                "solution", po::value<std::string>(), "solution file")("help,h", "show this help");
+                "solution", po::value<std::string>(), "solution file");
             po::positional_options_description positional;
             positional.add("solution", 1);
             const auto vm = tools::parse(argc, argv, options, positional);
-            if (vm.count("help"))
-            {
-                std::cout << options << std::endl;
-                return static_cast<int>(tools::EXIT_SOLVED);
-            }
             if (!vm.count("solution"))
                 throw std::invalid_argument("no solution file given (see --help)");
             const MultiRobotProblem problem = tools::problemFromOptions(vm);
@@ -42,9 +38,9 @@ int main(int argc, char **argv)
             ValidationOptions validation;
             // More samples per timestep than 1024 only make the check slower (the continuous check is exact).
             validation.substeps =
-                static_cast<unsigned int>(tools::parseInteger(vm["substeps"].as<std::string>(), "--substeps", 1, 1024));
+                static_cast<unsigned int>(parseInteger(vm["substeps"].as<std::string>(), "--substeps", 1, 1024));
             validation.threads =
-                static_cast<unsigned int>(tools::parseInteger(vm["threads"].as<std::string>(), "--threads", 0, 1024));
+                static_cast<unsigned int>(parseInteger(vm["threads"].as<std::string>(), "--threads", 0, 1024));
             const ompl::time::point checkStart = ompl::time::now();
             const ValidationReport report = SolutionValidator(problem, validation).validate(plan);
             const double checkTime = ompl::time::seconds(ompl::time::now() - checkStart);

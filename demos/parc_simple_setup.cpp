@@ -1,56 +1,50 @@
-/* Using P-ARC from plain OMPL code: a team of four discs, OMPL's SimpleSetup, composite ScopedStates for
-   the start and goal, PARC as the planner, and the validated per-robot plan read back. (README's API example.) */
+/* P-ARC from user code, the way OMPL's SimpleSetup is used: a team of four discs, per-robot starts and goals by
+   name, the planner by name with typed parameters, live progress, then the per-robot plan, smoothed and checked by
+   the independent validator. (The README's API example; also run by the test suite.) */
+#include <ompl_parc/planners/setup/MultiRobotSetup.h>
 #include <ompl_parc/robots/DiscRobot.h>
-#include <ompl_parc/model/MultiRobotSpaceInformation.h>
-#include <ompl_parc/validation/SolutionValidator.h>
-#include <ompl_parc/planners/PARC.h>
-
-#include <ompl/base/ScopedState.h>
-#include <ompl/geometric/SimpleSetup.h>
 
 #include <iostream>
 
 int main()
 {
-    // Four discs of radius 0.5 in a 20 x 20 room, crossing in pairs through its middle.
+    // Four discs of radius 0.5 in a 20 x 20 room with a pillar, crossing in pairs through its middle.
     auto env = std::make_shared<ompl_parc::Environment>();
     env->addBox2D("pillar", 0., 6., 1., 1.);
     ompl::base::RealVectorBounds room(2);
     room.setLow(-10.);
     room.setHigh(10.);
     std::vector<ompl_parc::RobotPtr> team;
-    for (int i = 0; i < 4; ++i)
-        team.push_back(std::make_shared<ompl_parc::DiscRobot>("r" + std::to_string(i), env, 0.5, room));
-    auto si = std::make_shared<ompl_parc::MultiRobotSpaceInformation>(team);  // 128 timesteps per unit
+    for (const char *name : {"left_low", "right_low", "left_high", "right_high"})
+        team.push_back(std::make_shared<ompl_parc::DiscRobot>(name, env, 0.5, room));
 
-    ompl::geometric::SimpleSetup setup(si);
-    ompl::base::ScopedState<> start(si), goal(si);  // composite states: x0, y0, x1, y1, ...
-    const double starts[4][2] = {{-8, -2}, {8, -2}, {-8, 2}, {8, 2}};
-    for (int i = 0; i < 4; ++i)
-    {
-        start[2 * i] = starts[i][0];
-        start[2 * i + 1] = starts[i][1];
-        goal[2 * i] = -starts[i][0];  // everyone crosses to the other side
-        goal[2 * i + 1] = starts[i][1];
-    }
-    setup.setStartAndGoalStates(start, goal);
+    ompl_parc::MultiRobotSetup setup(team);  // 128 timesteps per unit of distance
+    setup.setStart("left_low", {-8., -2.});
+    setup.setGoal("left_low", {8., -2.});
+    setup.setStart("right_low", {8., -2.});
+    setup.setGoal("right_low", {-8., -2.});
+    setup.setStart("left_high", {-8., 2.});
+    setup.setGoal("left_high", {8., 2.});
+    setup.setStart("right_high", {8., 2.});
+    setup.setGoal("right_high", {-8., 2.});
 
-    auto parc = std::make_shared<ompl_parc::PARC>(si);
-    parc->params().setParam("workers", "2");
-    parc->params().setParam("seed", "1");
-    setup.setPlanner(parc);
-    if (setup.solve(30.0) != ompl::base::PlannerStatus::EXACT_SOLUTION)
+    setup.setPlanner("parc");  // or "arc", "orparc", "pp-st-rrt", ... (ompl_parc::PlannerRegistry::names())
+    setup.setPlannerParameter("workers", 2);
+    setup.setPlannerParameter("seed", 1);
+    if (setup.solve(30.) != ompl::base::PlannerStatus::EXACT_SOLUTION)
     {
-        std::cerr << "not solved: " << parc->getStatusMessage() << std::endl;
+        std::cerr << "not solved" << std::endl;
         return 1;
     }
-    // The composite path has one state per timestep; the per-robot plan is the planner's.
-    const ompl_parc::MultiRobotPlan &plan = parc->getPlan();
-    const ompl_parc::MultiRobotProblem problem(si, {{-8, -2}, {8, -2}, {-8, 2}, {8, 2}},
-                                               {{8, -2}, {-8, -2}, {8, 2}, {-8, 2}});
-    const auto report = ompl_parc::SolutionValidator(problem).validate(plan);
-    std::cout << "solved: " << setup.getSolutionPath().getStateCount() << " composite states, makespan "
-              << plan.getMakespan() << " timesteps, robot r0 arrives at t=" << plan.getArrival(0)
+    const auto progress = setup.getProgress();  // also readable from another thread while solve() runs
+    std::cout << "solved in " << setup.getLastPlanComputationTime()
+              << " s: " << progress.at("conflicts resolved INTEGER") << " conflicts resolved, makespan "
+              << setup.getPlan().getMakespan() << " timesteps" << std::endl;
+
+    const ompl_parc::SmoothingReport smoothing = setup.simplify(0.5);
+    const ompl_parc::ValidationReport report = setup.validate();
+    std::cout << "smoothed: makespan " << smoothing.makespanBefore << " -> " << setup.getPlan().getMakespan()
+              << ", robot right_high arrives at t=" << setup.getPlan().getArrival(setup.getRobotIndex("right_high"))
               << ", validated: " << (report.valid ? "yes" : report.message) << std::endl;
     return report.valid ? 0 : 1;
 }

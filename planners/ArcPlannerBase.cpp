@@ -2,6 +2,7 @@
 
 #include "ompl_parc/planners/subproblem/CompositeRRTConnectSolver.h"
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
+#include "ompl_parc/util/InnerPlannerLog.h"
 #include "ompl_parc/util/PlannerSeed.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
 #include "ompl_parc/util/StopSignal.h"
@@ -65,6 +66,8 @@ ompl_parc::ArcPlannerBase::ArcPlannerBase(const ob::SpaceInformationPtr &si, con
     declareParam<bool>("shorten_patches", this, &ArcPlannerBase::setShortenPatches, &ArcPlannerBase::getShortenPatches,
                        "0,1");
     declareParam<unsigned int>("seed", this, &ArcPlannerBase::setSeed, &ArcPlannerBase::getSeed);
+    for (const auto &[name, property] : progress_.properties())
+        addPlannerProgressProperty(name, property);
 }
 
 ompl_parc::ArcPlannerBase::~ArcPlannerBase() = default;
@@ -186,6 +189,7 @@ void ompl_parc::ArcPlannerBase::clear()
     statusMessage_.clear();
     smoothed_.reset();
     smoothing_.clear();
+    progress_.reset();
 }
 
 std::optional<ob::PlannerStatus> ompl_parc::ArcPlannerBase::readProblem()
@@ -237,10 +241,18 @@ ob::PlannerStatus ompl_parc::ArcPlannerBase::solve(const ob::PlannerTerminationC
     statusMessage_.clear();
     smoothed_.reset();
     smoothing_.clear();
+    if (reportTo_ == &progress_)
+        progress_.startSolve();
     try
     {
         const StopSignal::Scope scope(ptc);
-        return solveStages(ptc);
+        const InnerPlannerLog::Session session;
+        const ob::PlannerStatus status = solveStages(ptc);
+        if (status == ob::PlannerStatus::TIMEOUT)
+            OMPL_INFORM("%s: %s (%u of %zu robots planned, %u conflicts resolved)", getName().c_str(),
+                        statusMessage_.c_str(), reportTo_->getRobotsPlanned(), mrsi_->getRobotCount(),
+                        getStatistics().repairs);
+        return status;
     }
     catch (const std::exception &e)
     {
@@ -259,25 +271,45 @@ ob::PlannerStatus ompl_parc::ArcPlannerBase::solveStages(const ob::PlannerTermin
             return *bad;
     RepairLoopOptions options = options_;
     options.hierarchy = makeHierarchy(options.settings);
+    options.progress = reportTo_;
     loop_->configure(std::move(options));
-    if (!loop_->isInitialised() && !loop_->planInitial(ptc))
+    const ArcStatistics &s = loop_->getStatistics();
+    if (!loop_->isInitialised())
     {
-        statusMessage_ = "time ran out while planning the robots' individual paths";
-        return ob::PlannerStatus(ob::PlannerStatus::TIMEOUT);
+        OMPL_INFORM("%s: planning %zu robots alone with %u worker(s)", getName().c_str(), mrsi_->getRobotCount(),
+                    options_.workers);
+        if (!loop_->planInitial(ptc))
+        {
+            statusMessage_ = "time ran out while planning the robots' individual paths";
+            return ob::PlannerStatus(ob::PlannerStatus::TIMEOUT);
+        }
+        OMPL_INFORM("%s: initial stage done in %.3f s, makespan %zu; resolving conflicts", getName().c_str(),
+                    s.initialWall, loop_->getPlan().getMakespan());
     }
     if (!loop_->resolve(ptc))
     {
         statusMessage_ = "time ran out while resolving conflicts";
         return ob::PlannerStatus(ob::PlannerStatus::TIMEOUT);
     }
+    OMPL_INFORM(
+        "%s: conflict-free after %u conflicts (%u solver calls, %u window expansions): detection %.3f s, "
+        "resolution %.3f s, makespan %zu",
+        getName().c_str(), s.conflicts, s.solverCalls, s.expansions, s.detectionWall, s.resolutionWall,
+        loop_->getPlan().getMakespan());
     if (smoothing_.getBudget() > 0.)
     {
+        reportTo_->reachStage(ArcProgress::Stage::SMOOTHING);
         smoothed_ = loop_->getPlan();
         smoothing_.apply(mrsi_, *smoothed_, ptc, mixSeed(loop_->getSeed(), 0x5300));
         pdef_->addSolutionPath(smoothed_->toPathGeometric(mrsi_), false, 0., getName());
     }
     else
         pdef_->addSolutionPath(loop_->buildSolutionPath(), false, 0., getName());
+    if (reportTo_ == &progress_)
+    {
+        progress_.setMakespan(getPlan().getMakespan());
+        progress_.reachStage(ArcProgress::Stage::SOLVED);
+    }
     return ob::PlannerStatus(ob::PlannerStatus::EXACT_SOLUTION);
 }
 

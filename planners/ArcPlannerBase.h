@@ -1,6 +1,7 @@
 #ifndef OMPL_PARC_PLANNERS_ARC_PLANNER_BASE_
 #define OMPL_PARC_PLANNERS_ARC_PLANNER_BASE_
 
+#include "ompl_parc/arc/ArcProgress.h"
 #include "ompl_parc/arc/RepairLoop.h"
 #include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/model/MultiRobotProblem.h"
@@ -39,6 +40,12 @@ namespace ompl_parc
             before the first solve(). */
         const MultiRobotPlan &getPlan() const;
         const ArcStatistics &getStatistics() const;
+        /** \brief Where the solve is (stage, counters, makespan so far), safe to read from another thread while
+            solve() runs; the same values are this planner's OMPL progress properties. */
+        const ArcProgress &getProgress() const { return progress_; }
+        /** \brief Report progress into \e shared instead of getProgress()'s (OR-P-ARC's instances into the race's);
+            \e shared must outlive the solves. The stage then stops at "resolving": the owner says when it is done. */
+        void reportProgressInto(ArcProgress &shared) { reportTo_ = &shared; }
         /** \brief Why the last solve() did not succeed (empty after success). */
         const std::string &getStatusMessage() const { return statusMessage_; }
         const ArcSettings &getSettings() const { return options_.settings; }
@@ -108,6 +115,9 @@ namespace ompl_parc
         /** \brief The smoothed copy of the loop's plan after a smoothed solve (the loop keeps its own). */
         std::optional<MultiRobotPlan> smoothed_;
         std::string statusMessage_;
+        ArcProgress progress_;
+        /** \brief &progress_, or the progress of the planner this one is part of (reportProgressInto()). */
+        ArcProgress *reportTo_{&progress_};
     };
 }  // namespace ompl_parc
 

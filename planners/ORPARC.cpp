@@ -2,9 +2,11 @@
 
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
 #include "ompl_parc/quality/PlanQuality.h"
+#include "ompl_parc/util/InnerPlannerLog.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
 
 #include <ompl/base/PlannerData.h>
+#include <ompl/util/Console.h>
 
 #include <algorithm>
 #include <map>
@@ -24,6 +26,8 @@ ompl_parc::ORPARC::ORPARC(const ob::SpaceInformationPtr &si)
     declareParam<unsigned int>("total_workers", this, &ORPARC::setTotalWorkers, &ORPARC::getTotalWorkers, "1:1:64");
     declareParam<std::string>("objective", this, &ORPARC::setObjective, &ORPARC::getObjective,
                               "first,makespan,sum_of_costs");
+    for (const auto &[name, property] : progress_.properties())
+        addPlannerProgressProperty(name, property);
 }
 
 ompl_parc::ORPARC::~ORPARC() = default;
@@ -54,6 +58,7 @@ void ompl_parc::ORPARC::clear()
     result_.reset();
     resultSmoothing_.reset();
     smoothing_.clear();
+    progress_.reset();
 }
 
 void ompl_parc::ORPARC::setProblemDefinition(const ob::ProblemDefinitionPtr &pdef)
@@ -80,6 +85,7 @@ void ompl_parc::ORPARC::createRacers(unsigned int seed)
             racer->params().setParams(values, true);
             racer->setSeed(seed);
             racer->setSmoothing(0.);
+            racer->reportProgressInto(progress_);
             return racer;
         },
         seed, pdef_);
@@ -95,11 +101,15 @@ ob::PlannerStatus ompl_parc::ORPARC::solve(const ob::PlannerTerminationCondition
     smoothing_.clear();
     rounds_ = 1;
     improvements_ = 0;
+    firstSolutionTime_ = -1.;
+    progress_.startSolve();
+    const InnerPlannerLog::Session session;
+    OMPL_INFORM("%s: racing %u P-ARC instances of %u worker(s) each", getName().c_str(), getInstances(), getWorkers());
     ob::PlannerStatus status = race_.run(ptc);
     if (race_.getWinner() >= 0)
         takeWinner(ptc);
     if (objective_ == "first" || (status != ob::PlannerStatus::EXACT_SOLUTION && status != ob::PlannerStatus::TIMEOUT))
-        return status;  // an invalid start or goal, or a crash, is every race's
+        return finish(status);  // an invalid start or goal, or a crash, is every race's
     // Anytime: more rounds with fresh seeds until the termination condition; the best plan is the solution.
     const unsigned int seed = prototype_->getSeed();
     const auto mrsi = MultiRobotSpaceInformation::get(si_, getName());
@@ -122,17 +132,37 @@ ob::PlannerStatus ompl_parc::ORPARC::solve(const ob::PlannerTerminationCondition
     }
     pdef_->clearSolutionPaths();
     if (!result_)
-        return status;
+        return finish(status);
     pdef_->addSolutionPath(result_->toPathGeometric(mrsi), false, 0., getName());
-    return ob::PlannerStatus::EXACT_SOLUTION;
+    OMPL_INFORM("%s: %zu races, %zu better plans; the best has %s %zu", getName().c_str(), rounds_, improvements_,
+                objective_.c_str(), objectiveOf(*result_));
+    return finish(ob::PlannerStatus::EXACT_SOLUTION);
+}
+
+ob::PlannerStatus ompl_parc::ORPARC::finish(ob::PlannerStatus status)
+{
+    if (status == ob::PlannerStatus::EXACT_SOLUTION)
+    {
+        progress_.setMakespan(getPlan().getMakespan());
+        progress_.reachStage(ArcProgress::Stage::SOLVED);
+    }
+    else
+        OMPL_INFORM("%s: no solution: %s", getName().c_str(), getStatusMessage().c_str());
+    return status;
 }
 
 void ompl_parc::ORPARC::takeWinner(const ob::PlannerTerminationCondition &ptc)
 {
     const PARC &winner = getRacer(race_.getWinner());
     const auto mrsi = MultiRobotSpaceInformation::get(si_, getName());
+    if (firstSolutionTime_ < 0.)
+        firstSolutionTime_ = progress_.getElapsed();
+    OMPL_INFORM("%s: instance %d won the race (makespan %zu)", getName().c_str(), race_.getWinner(),
+                winner.getPlan().getMakespan());
     if (objective_ == "first" && prototype_->getSmoothing() <= 0.)
         return;  // the winner's own plan and solution path are the answer
+    if (objective_ == "first")
+        progress_.reachStage(ArcProgress::Stage::SMOOTHING);
     MultiRobotPlan plan = winner.getPlan();
     smoothing_.setBudget(prototype_->getSmoothing());
     smoothing_.apply(mrsi, plan, ptc, mixSeed(winner.getSeed(), 0x5300));
@@ -219,6 +249,8 @@ void ompl_parc::ORPARC::getPlannerData(ob::PlannerData &data) const
     {
         data.properties["anytime_rounds INTEGER"] = std::to_string(rounds_);
         data.properties["improvements INTEGER"] = std::to_string(improvements_);
+        if (firstSolutionTime_ >= 0.)
+            data.properties["first_solution_time REAL"] = std::to_string(firstSolutionTime_);
     }
     data.properties["reported_instance INTEGER"] = std::to_string(getReportedInstance());
     race_.addProperties(data);

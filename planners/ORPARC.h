@@ -33,9 +33,10 @@ namespace ompl_parc
         it races again with fresh seeds (round r: mixSeed(seed, r)) until the termination condition (or a plan that
         meets its lower bound, PlanQuality), smooths each round's winner (\e smooth), keeps the plan with the lowest
         objective and reports each improvement through the ProblemDefinition's intermediate-solution callback (cost =
-        the objective in timesteps). The statistics are then the last race's (which the termination condition may
-        have cut short); \e anytime_rounds counts the races started, \e improvements the better plans. A first race
-        that ends otherwise than with a solution or a timeout (an invalid start, a crash) ends the solve. */
+        the objective in timesteps; \e first_solution_time says when the first came). The statistics are then the last
+       race's (which the termination condition may have cut short); \e anytime_rounds counts the races started, \e
+       improvements the better plans. A first race that ends otherwise than with a solution or a timeout (an invalid
+       start, a crash) ends the solve. */
     class ORPARC : public ompl::base::Planner
     {
       public:
@@ -53,6 +54,9 @@ namespace ompl_parc
             best one with an objective); empty otherwise. The instances never smooth: the winner's plan is smoothed
             once, after its race. */
         const MultiRobotPlan &getPlan() const;
+        /** \brief Where the race is, safe to read from another thread while solve() runs (also this planner's
+            OMPL progress properties): the furthest stage of any instance, the sums of their counters. */
+        const ArcProgress &getProgress() const { return progress_; }
         /** \brief The reported instance's statistics (all zero before a solve). */
         const ArcStatistics &getStatistics() const;
         const ParcStatistics &getParallelStatistics() const;
@@ -95,6 +99,8 @@ namespace ompl_parc
         /** \brief After a won race: smooth a copy of the winner's plan; keep it (and report it) if it is the first or
             better than the best so far by the objective. */
         void takeWinner(const ompl::base::PlannerTerminationCondition &ptc);
+        /** \brief The end of a solve that returns \e status: the progress says "solved" (or the log why not). */
+        ompl::base::PlannerStatus finish(ompl::base::PlannerStatus status);
         /** \brief The objective's value of \e plan (the makespan for "first"). */
         std::size_t objectiveOf(const MultiRobotPlan &plan) const;
         /** \brief The reported instance, or the prototype (all zero, empty plan) when there is none. */
@@ -109,6 +115,11 @@ namespace ompl_parc
         /** \brief The smoothing report of result_. */
         std::optional<SmoothingReport> resultSmoothing_;
         std::size_t rounds_{0}, improvements_{0};
+        /** \brief Seconds from the start of the solve to the first race won (-1: none yet); with an objective, the
+            PlannerData's first_solution_time. */
+        double firstSolutionTime_{-1.};
+        /** \brief Every instance reports into it (ArcPlannerBase::reportProgressInto()). */
+        ArcProgress progress_;
     };
 }  // namespace ompl_parc
 

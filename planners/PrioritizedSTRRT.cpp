@@ -1,6 +1,7 @@
 #include "ompl_parc/planners/PrioritizedSTRRT.h"
 
 #include "ompl_parc/model/MultiRobotPlan.h"
+#include "ompl_parc/util/InnerPlannerLog.h"
 #include "ompl_parc/util/PlannerSeed.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
 #include "ompl_parc/util/StopSignal.h"
@@ -115,7 +116,11 @@ ob::PlannerStatus ompl_parc::PrioritizedSTRRT::solve(const ob::PlannerTerminatio
     lastSeed_ = static_cast<unsigned int>(seedOrDraw(seed_));
     Patch patch;
     const StopSignal::Scope scope(ptc);
-    solved_ = PrioritizedSTRRTSolver(settings_).solve(*mrsi_, whole, ptc, lastSeed_, patch);
+    const InnerPlannerLog::Session session;
+    {
+        const InnerPlannerLog::Scope inner;
+        solved_ = PrioritizedSTRRTSolver(settings_).solve(*mrsi_, whole, ptc, lastSeed_, patch);
+    }
     if (!solved_)
         return ob::PlannerStatus::TIMEOUT;
 

@@ -7,12 +7,22 @@ With a solution in the file, each end effector's path is drawn too (thin, in bot
 No kinematics here: every point comes from the C++ side (GeometryFile).
 
 Usage: scripts/draw_panda_cage.py GEOMETRY.json PICTURE.png [--title TEXT]
-(Debian's /usr/bin/python3 with python3-matplotlib, from scripts/setup.sh)
+(Debian's /usr/bin/python3 with python3-matplotlib, from scripts/setup.sh; another python3 without matplotlib
+hands over to it, or exits 2 when it is not there)
 """
 import argparse
 import json
+import os
+import sys
 
-import matplotlib
+try:
+    import matplotlib
+except ImportError:  # a python3 without it (pyenv, a venv) first on PATH: Debian's has it
+    if os.path.exists("/usr/bin/python3") and sys.executable != "/usr/bin/python3":
+        os.execv("/usr/bin/python3", ["/usr/bin/python3", os.path.abspath(__file__)] + sys.argv[1:])
+    print("draw_panda_cage.py: no matplotlib for this python3; run scripts/setup.sh (Debian's python3-matplotlib)",
+          file=sys.stderr)
+    sys.exit(2)
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402 (the backend must be chosen first)

@@ -1,13 +1,12 @@
-#include "BenchmarkConfig.h"
-#include "ToolSupport.h"
-
+#include "ompl_parc/planners/setup/BenchmarkConfig.h"
+#include "ompl_parc/planners/setup/PlannerRegistry.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 
 #include <gtest/gtest.h>
 
 #include <sstream>
 
-using ompl_parc::tools::BenchmarkConfig;
+using ompl_parc::BenchmarkConfig;
 
 namespace
 {
@@ -109,10 +108,10 @@ TEST(BenchmarkConfig, PlannerParametersAreCheckedByName)
     // Declared names are checked when the planners are created, with the valid ones listed.
     const auto problem = ompl_parc::scenarios::createMobileCross(4);
     const auto si = problem.getSpaceInformation();
-    EXPECT_NO_THROW(ompl_parc::tools::createPlanner("or-ep-rrt-c", si, {"instances=2", "total_workers=4"}));
+    EXPECT_NO_THROW(ompl_parc::PlannerRegistry::create("or-ep-rrt-c", si, {"instances=2", "total_workers=4"}));
     try
     {
-        ompl_parc::tools::createPlanner("ep-rrt-c", si, {"threads=2"});
+        ompl_parc::PlannerRegistry::create("ep-rrt-c", si, {"threads=2"});
         FAIL() << "an unknown parameter was accepted";
     }
     catch (const std::invalid_argument &e)

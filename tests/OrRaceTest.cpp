@@ -2,6 +2,7 @@
 #include "ToolSupport.h"
 
 #include "ompl_parc/planners/ORPARC.h"
+#include "ompl_parc/planners/setup/PlannerRegistry.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
 #include "ompl_parc/validation/SolutionValidator.h"
@@ -26,7 +27,7 @@ TEST(OrParcRace, ProfileAndExplicitParametersReachEveryRacerInAnyOrder)
     std::swap(profileFirst[2], profileFirst[3]);  // instances before total_workers
     for (const auto &params : {explicitFirst, profileFirst})
     {
-        auto planner = tools::createPlanner("orparc", problem.getSpaceInformation(), params);
+        auto planner = PlannerRegistry::create("orparc", problem.getSpaceInformation(), params);
         planner->setProblemDefinition(problem.createProblemDefinition());
         planner->setup();
         const auto &orparc = static_cast<const ORPARC &>(*planner);

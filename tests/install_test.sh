@@ -2,7 +2,8 @@
 # Installs the built tree into a temporary prefix and builds a tiny consumer project against it with
 # find_package(ompl_parc) + target_link_libraries(app ompl_parc::ompl_parc), then runs it. The consumer names
 # only the prefix, yet must find the OMPL the library was built with (OMPL_VERSION, e.g. one outside the system's
-# paths), and compile and run against it.
+# paths), and compile and run against it. Then, from another folder, the installed tools: --version, a shipped
+# scenario file and Panda Cage task solved and validated, a shipped benchmark suite checked, the plot script run.
 # Usage: install_test.sh BUILD_DIR CONSUMER_SOURCE_DIR OMPL_VERSION
 set -eu
 build=$1
@@ -19,3 +20,22 @@ if ! grep -qx -- "-- consumer: OMPL $ompl_version" "$tmp/configure.log"; then
 fi
 cmake --build "$tmp/build" -j2 >/dev/null
 "$tmp/build/consumer"
+
+mkdir "$tmp/elsewhere"
+cd "$tmp/elsewhere"
+bin=$tmp/prefix/bin
+share=$tmp/prefix/share/ompl_parc
+"$bin/ompl_parc_demo" --version | grep -qx "ompl_parc [0-9.]* (OMPL $ompl_version)" || { echo "bad --version"; exit 1; }
+for tool in ompl_parc_validate ompl_parc_benchmark ompl_parc_generate ompl_parc_generate_panda_cage; do
+    "$bin/$tool" --version >/dev/null || { echo "$tool --version failed"; exit 1; }
+done
+"$bin/ompl_parc_demo" --scenario-file "$share/scenarios/doorway_swap.json" --seed 1 --out swap.json | grep -q '^validated  yes' ||
+    { echo "the installed demo did not solve the shipped doorway_swap.json"; exit 1; }
+"$bin/ompl_parc_validate" swap.json --scenario-file "$share/scenarios/doorway_swap.json" >/dev/null ||
+    { echo "the installed validator rejected the solution"; exit 1; }
+"$bin/ompl_parc_demo" --scenario-file "$share/scenarios/panda_cage/panda_cage_2_0.json" --param profile=panda \
+    --smooth 0 | grep -q '^validated  yes' || { echo "the installed demo did not solve the shipped Panda Cage task"; exit 1; }
+[ -f "$share/robots/panda.urdf" ] || { echo "no panda.urdf in share/"; exit 1; }
+"$bin/ompl_parc_benchmark" --check "$share/benchmarks/quick/mobile_cross_8.cfg" >/dev/null ||
+    { echo "a shipped benchmark suite does not check"; exit 1; }
+echo "install: tools, scenarios and suites work from $tmp/elsewhere"

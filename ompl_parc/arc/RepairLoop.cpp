@@ -3,12 +3,17 @@
 #include "ompl_parc/arc/InitialPlanner.h"
 #include "ompl_parc/parallel/OrTaskRunner.h"
 #include "ompl_parc/parallel/StageClock.h"
+#include "ompl_parc/util/InnerPlannerLog.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
 
+#include <ompl/util/Console.h>
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
+#include <atomic>
+#include <memory>
 #include <mutex>
+#include <sstream>
 
 namespace ob = ompl::base;
 
@@ -21,6 +26,15 @@ namespace
 
     /** Seeds of the repair stage live apart from the initial stage's (one per robot). */
     constexpr std::uint_fast32_t REPAIR_SEEDS = 0x10000;
+
+    /** "0, 3, 5": the robots of a conflict's team, for the log. */
+    std::string listed(const std::vector<std::size_t> &robots)
+    {
+        std::ostringstream out;
+        for (std::size_t k = 0; k < robots.size(); ++k)
+            out << (k == 0 ? "" : ", ") << robots[k];
+        return out.str();
+    }
 }  // namespace
 
 ompl_parc::RepairLoop::RepairLoop(const MultiRobotProblem &problem, std::uint_fast32_t seed)
@@ -56,6 +70,9 @@ bool ompl_parc::RepairLoop::isInitialised() const
 bool ompl_parc::RepairLoop::planInitial(const ob::PlannerTerminationCondition &ptc)
 {
     StageClock clock(statistics_.initialWall, statistics_.initialCpu);
+    ArcProgress *progress = options_.progress;
+    if (progress != nullptr)
+        progress->reachStage(ArcProgress::Stage::INITIAL);
     std::vector<std::size_t> robots;
     for (std::size_t r = 0; r < planned_.size(); ++r)
         if (!planned_[r])
@@ -63,17 +80,22 @@ bool ompl_parc::RepairLoop::planInitial(const ob::PlannerTerminationCondition &p
     const InitialPlanner planner(problem_, options_.settings.simplifyInitial);
     const std::size_t n = planned_.size();
     OrTaskStatistics stats;
+    // A robot counts as planned once, at its first path (local OR may find several).
+    const auto counted = std::make_unique<std::atomic<bool>[]>(robots.size());
     const auto paths = OrTaskRunner<TimedPath>(*pool_, options_.localOr)
                            .run(
                                robots.size(), ptc,
                                [&](std::size_t task, unsigned int attempt,
                                    const ob::PlannerTerminationCondition &stop) -> std::optional<TimedPath>
                                {
+                                   const InnerPlannerLog::Scope inner;
                                    const std::size_t r = robots[task];
                                    // Attempt 0 uses the robot's own seed; extra OR attempts new ones.
                                    TimedPath path;
                                    if (!planner.plan(r, stop, mixSeed(seed_, r + n * attempt), path))
                                        return std::nullopt;
+                                   if (progress != nullptr && !counted[task].exchange(true))
+                                       progress->addRobotsPlanned(1);
                                    return path;
                                },
                                stats);
@@ -86,11 +108,15 @@ bool ompl_parc::RepairLoop::planInitial(const ob::PlannerTerminationCondition &p
             plan_.setPath(robots[k], *paths[k]);
             planned_[robots[k]] = 1;
         }
+    if (progress != nullptr)
+        progress->setMakespan(plan_.getMakespan());
     return isInitialised();
 }
 
 bool ompl_parc::RepairLoop::resolve(const ob::PlannerTerminationCondition &ptc)
 {
+    if (options_.progress != nullptr)
+        options_.progress->reachStage(ArcProgress::Stage::RESOLVING);
     while (!ptc)
     {
         DetectedBatch batch;
@@ -103,6 +129,11 @@ bool ompl_parc::RepairLoop::resolve(const ob::PlannerTerminationCondition &ptc)
             return !ptc;
         ++parallel_.batches;
         parallel_.batchedConflicts += static_cast<unsigned int>(batch.entries.size());
+        if (options_.progress != nullptr)
+        {
+            options_.progress->addBatches(1);
+            options_.progress->addConflictsFound(static_cast<unsigned int>(batch.entries.size()));
+        }
         if (parallel_.batches == 1)
             parallel_.firstBatchSize = static_cast<unsigned int>(batch.entries.size());
         for (const BatchEntry &entry : batch.entries)
@@ -130,9 +161,12 @@ bool ompl_parc::RepairLoop::repairBatch(const std::vector<BatchEntry> &batch,
                     auto seed = mixSeed(seed_, REPAIR_SEEDS + first + task + 1);
                     if (attempt > 0)
                         seed = mixSeed(seed, attempt);
+                    const InnerPlannerLog::Scope inner;
                     ResolveTrace trace;
                     auto repair =
                         resolver_->resolve(plan_, batch[task].team, batch[task].conflict.timestep, stop, seed, &trace);
+                    if (options_.progress != nullptr)
+                        options_.progress->addSolverCalls(trace.calls);
                     const std::lock_guard<std::mutex> lock(traced);
                     statistics_.solverCalls += trace.calls;
                     statistics_.expansions += trace.expansions;
@@ -144,13 +178,25 @@ bool ompl_parc::RepairLoop::repairBatch(const std::vector<BatchEntry> &batch,
     parallel_.cancelledAttempts += stats.cancelled;
     parallel_.projectedResolution += largest(stats.workerCpu);
     bool all = true;
-    for (const auto &repair : repairs)  // batch order: deterministic
+    for (std::size_t k = 0; k < repairs.size(); ++k)  // batch order: deterministic
     {
         ++statistics_.conflicts;
-        if (repair)
+        const Conflict &conflict = batch[k].conflict;
+        if (const auto &repair = repairs[k])
+        {
+            OMPL_DEBUG("conflict %u: robots %zu and %zu at t=%zu, team {%s}: repaired by %s over [%zu, %zu]%s",
+                       statistics_.conflicts, conflict.first, conflict.second, conflict.timestep,
+                       listed(batch[k].team).c_str(), repair->solver.c_str(), repair->subproblem.windowStart,
+                       repair->subproblem.windowEnd, repair->global ? " (global)" : "");
             applyRepair(*repair);
+        }
         else
+        {
+            OMPL_DEBUG("conflict %u: robots %zu and %zu at t=%zu, team {%s}: not repaired before the stop",
+                       statistics_.conflicts, conflict.first, conflict.second, conflict.timestep,
+                       listed(batch[k].team).c_str());
             all = false;
+        }
     }
     return all;
 }
@@ -166,6 +212,11 @@ void ompl_parc::RepairLoop::applyRepair(const Repair &repair)
     ++statistics_.repairs;
     statistics_.globalRepairs += repair.global ? 1 : 0;
     ++statistics_.solverWins[repair.solver];
+    if (options_.progress != nullptr)
+    {
+        options_.progress->addConflictsResolved(1);
+        options_.progress->setMakespan(plan_.getMakespan());
+    }
 }
 
 ompl::geometric::PathGeometricPtr ompl_parc::RepairLoop::buildSolutionPath() const

@@ -1,6 +1,7 @@
 #ifndef OMPL_PARC_ARC_REPAIR_LOOP_
 #define OMPL_PARC_ARC_REPAIR_LOOP_
 
+#include "ompl_parc/arc/ArcProgress.h"
 #include "ompl_parc/arc/ArcSettings.h"
 #include "ompl_parc/arc/ArcStatistics.h"
 #include "ompl_parc/arc/BatchDetector.h"
@@ -32,6 +33,8 @@ namespace ompl_parc
         std::size_t horizon{BatchDetector::UNBOUNDED};
         /** \brief Optimistic (true) or strict batch independence; local OR multi-start of idle workers. */
         bool optimistic{true}, localOr{true};
+        /** \brief Where the stages report their progress as they go (the planner's; none if null). */
+        ArcProgress *progress{nullptr};
     };
 
     /** \brief The ARC / P-ARC engine: owns the plan being repaired, the conflict detector, the repair cache,

@@ -1,6 +1,7 @@
 #include "ompl_parc/quality/SmoothingStep.h"
 
 #include "ompl_parc/quality/PlanQuality.h"
+#include "ompl_parc/util/InnerPlannerLog.h"
 
 #include <ompl/util/Console.h>
 #include <ompl/util/Exception.h>
@@ -36,7 +37,13 @@ void ompl_parc::SmoothingStep::apply(const MultiRobotSpaceInformationPtr &si, Mu
         PlanSmoother smoother(si, seed);
         if (replanner_)
             smoother.setReplanner(replanner_());
-        report_ = smoother.smooth(plan, budget);
+        {
+            const InnerPlannerLog::Scope inner;  // the replans' planners
+            report_ = smoother.smooth(plan, budget);
+        }
+        OMPL_INFORM("smoothing: makespan %zu -> %zu, sum of costs %zu -> %zu (%zu changes kept) in %.3f s",
+                    report_->makespanBefore, report_->makespanAfter, report_->sumOfCostsBefore,
+                    report_->sumOfCostsAfter, report_->kept(), report_->seconds);
     }
     catch (const std::exception &e)
     {

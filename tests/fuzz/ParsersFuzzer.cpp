@@ -4,7 +4,7 @@
    std::exception (ompl::Exception, std::invalid_argument, ...); what the fuzzer reports is anything else: a crash, a
    sanitizer error (the target is built with AddressSanitizer and UndefinedBehaviorSanitizer), a hang or unbounded
    memory. Built with -DOMPL_PARC_FUZZ=ON by clang; scripts/fuzz.sh builds it and runs it briefly on the corpus. */
-#include "BenchmarkConfig.h"
+#include "ompl_parc/planners/setup/BenchmarkConfig.h"
 
 #include "ompl_parc/io/ScenarioFile.h"
 #include "ompl_parc/io/SolutionFile.h"
@@ -55,7 +55,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
             default:
             {
                 std::istringstream in(text);
-                ompl_parc::tools::BenchmarkConfig::parse(in, ".");
+                ompl_parc::BenchmarkConfig::parse(in, ".");
             }
         }
     }

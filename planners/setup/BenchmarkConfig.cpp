@@ -1,8 +1,8 @@
-#include "BenchmarkConfig.h"
+#include "ompl_parc/planners/setup/BenchmarkConfig.h"
 
+#include "ompl_parc/planners/setup/PlannerRegistry.h"
+#include "ompl_parc/util/ParseNumber.h"
 #include "ompl_parc/util/TextFile.h"
-
-#include "ToolSupport.h"
 
 #include <boost/lexical_cast.hpp>
 #include <boost/property_tree/ini_parser.hpp>
@@ -64,9 +64,9 @@ namespace
         const std::string value = text ? *text : required(section, name, key);
         const std::string what = "[" + name + "] " + key;
         if constexpr (std::is_integral_v<T>)
-            return static_cast<T>(ompl_parc::tools::parseInteger(value, what, least, most));
+            return static_cast<T>(ompl_parc::parseInteger(value, what, least, most));
         else
-            return static_cast<T>(ompl_parc::tools::parseReal(value, what, least, most));
+            return static_cast<T>(ompl_parc::parseReal(value, what, least, most));
     }
 
     /** Names become file names in the output folder: letters, digits, '.', '_' and '-', not starting with '.'. */
@@ -84,14 +84,14 @@ namespace
     }
 }  // namespace
 
-ompl_parc::tools::BenchmarkConfig ompl_parc::tools::BenchmarkConfig::read(const std::string &path)
+ompl_parc::BenchmarkConfig ompl_parc::BenchmarkConfig::read(const std::string &path)
 {
     std::istringstream in(TextFile::read(path, "BenchmarkConfig"));
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
     return parse(in, folder.empty() ? "." : folder.string());
 }
 
-ompl_parc::tools::BenchmarkConfig ompl_parc::tools::BenchmarkConfig::parse(std::istream &in, const std::string &folder)
+ompl_parc::BenchmarkConfig ompl_parc::BenchmarkConfig::parse(std::istream &in, const std::string &folder)
 {
     pt::ptree tree;
     try
@@ -157,14 +157,19 @@ ompl_parc::tools::BenchmarkConfig ompl_parc::tools::BenchmarkConfig::parse(std::
     // Planner entries are the keys without a dot; "label.param" lines configure them.
     const pt::ptree &planners = tree.get_child("planner");
     std::map<std::string, std::size_t> byLabel;
-    const std::vector<std::string> types = plannerNames();
+    const std::vector<std::string> types = PlannerRegistry::names();
     for (const auto &entry : planners)
         if (entry.first.find('.') == std::string::npos)
         {
-            const std::string type = entry.second.data().empty() ? entry.first : entry.second.data();
-            if (std::find(types.begin(), types.end(), type) == types.end())
-                throw std::invalid_argument("[planner] " + entry.first + ": unknown planner '" + type +
-                                            "' (valid: " + join(types) + ")");
+            std::string type;
+            try
+            {
+                type = PlannerRegistry::canonicalName(entry.second.data().empty() ? entry.first : entry.second.data());
+            }
+            catch (const std::invalid_argument &e)
+            {
+                throw std::invalid_argument("[planner] " + entry.first + ": " + e.what());
+            }
             byLabel[entry.first] = config.planners_.size();
             config.planners_.push_back({entry.first, type, entry.first, {}});
         }

@@ -1,23 +1,23 @@
-#ifndef OMPL_PARC_DEMOS_BENCHMARK_CONFIG_
-#define OMPL_PARC_DEMOS_BENCHMARK_CONFIG_
+#ifndef OMPL_PARC_PLANNERS_SETUP_BENCHMARK_CONFIG_
+#define OMPL_PARC_PLANNERS_SETUP_BENCHMARK_CONFIG_
 
 #include <cstddef>
 #include <iosfwd>
 #include <string>
 #include <vector>
 
-namespace ompl_parc::tools
+namespace ompl_parc
 {
     /** \brief One planner of a benchmark: a registry planner with parameters by their declared names. */
     struct BenchmarkPlanner
     {
         /** \brief The key declaring it in [planner] (unique in the file). */
         std::string label;
-        /** \brief The registry name (tools::plannerNames()). */
+        /** \brief The registry name (PlannerRegistry::names()). */
         std::string type;
         /** \brief The name in the log and the CSV: "label.name", else the label. */
         std::string name;
-        /** \brief "key=value" assignments, in file order, for tools::createPlanner(). */
+        /** \brief "key=value" assignments, in file order, for PlannerRegistry::create(). */
         std::vector<std::string> params;
     };
 
@@ -72,7 +72,7 @@ namespace ompl_parc::tools
         Comments are whole lines starting with '#' or ';'.
         Unknown sections, keys, labels and planner names, malformed numbers and out-of-range values throw
         std::invalid_argument with a one-line reason naming the valid choices. Planner parameter names are
-        checked when the planners are created (tools::createPlanner()). */
+        checked when the planners are created (PlannerRegistry::create()). */
     class BenchmarkConfig
     {
       public:
@@ -110,6 +110,6 @@ namespace ompl_parc::tools
         unsigned int workers_{1};
         std::vector<BenchmarkPlanner> planners_;
     };
-}  // namespace ompl_parc::tools
+}  // namespace ompl_parc
 
 #endif

@@ -1,0 +1,73 @@
+#include "ompl_parc/util/InnerPlannerLog.h"
+
+#include <ompl/util/Console.h>
+
+#include <atomic>
+#include <mutex>
+
+namespace
+{
+    std::atomic<bool> shown{false};
+    /** How many Scopes the calling thread is inside. */
+    thread_local unsigned int depth = 0;
+
+    /** Forwards to the handler it replaced, except the inner planners' messages below warnings. OMPL calls it with
+        its console lock held: it must not call back into OMPL's console functions. */
+    class Filter : public ompl::msg::OutputHandler
+    {
+      public:
+        void log(const std::string &text, ompl::msg::LogLevel level, const char *filename, int line) override
+        {
+            if (depth > 0 && level < ompl::msg::LOG_WARN && !shown.load(std::memory_order_relaxed))
+                return;
+            next_->log(text, level, filename, line);
+        }
+
+        ompl::msg::OutputHandler *next_{nullptr};
+    };
+
+    std::mutex sessionsMutex;
+    unsigned int sessions = 0;
+    Filter filter;
+}  // namespace
+
+void ompl_parc::InnerPlannerLog::setShown(bool show)
+{
+    shown = show;
+}
+
+bool ompl_parc::InnerPlannerLog::isShown()
+{
+    return shown;
+}
+
+ompl_parc::InnerPlannerLog::Session::Session()
+{
+    const std::lock_guard<std::mutex> lock(sessionsMutex);
+    if (sessions++ > 0)
+        return;
+    ompl::msg::OutputHandler *current = ompl::msg::getOutputHandler();
+    if (current == nullptr || current == &filter)
+        return;  // nothing is printed, or the filter is in place already
+    filter.next_ = current;
+    ompl::msg::useOutputHandler(&filter);
+}
+
+ompl_parc::InnerPlannerLog::Session::~Session()
+{
+    const std::lock_guard<std::mutex> lock(sessionsMutex);
+    if (--sessions > 0)
+        return;
+    if (ompl::msg::getOutputHandler() == &filter)
+        ompl::msg::useOutputHandler(filter.next_);
+}
+
+ompl_parc::InnerPlannerLog::Scope::Scope()
+{
+    ++depth;
+}
+
+ompl_parc::InnerPlannerLog::Scope::~Scope()
+{
+    --depth;
+}
