@@ -33,6 +33,7 @@ namespace ompl_parc
         explicit EPRRTConnect(const ompl::base::SpaceInformationPtr &si);
         ~EPRRTConnect() override;
 
+        using ompl::base::Planner::solve;  // keep solve(seconds) visible next to the override
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
         void clear() override;
         void setup() override;

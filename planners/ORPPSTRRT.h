@@ -20,6 +20,7 @@ namespace ompl_parc
       public:
         explicit ORPPSTRRT(const ompl::base::SpaceInformationPtr &si);
 
+        using ompl::base::Planner::solve;  // keep solve(seconds) visible next to the override
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
         void getPlannerData(ompl::base::PlannerData &data) const override;
 

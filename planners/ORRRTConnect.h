@@ -24,6 +24,7 @@ namespace ompl_parc
       public:
         explicit ORRRTConnect(const ompl::base::SpaceInformationPtr &si);
 
+        using ompl::base::Planner::solve;  // keep solve(seconds) visible next to the override
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
         void clear() override;
         void getPlannerData(ompl::base::PlannerData &data) const override;

@@ -26,6 +26,7 @@ namespace ompl_parc
 
         /** \brief INVALID_START / INVALID_GOAL (logging which robot is invalid), EXACT_SOLUTION, or TIMEOUT
             when prioritised planning fails in this order (it may fail before the termination condition). */
+        using ompl::base::Planner::solve;  // keep solve(seconds) visible next to the override
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
         void getPlannerData(ompl::base::PlannerData &data) const override;
 

@@ -43,6 +43,7 @@ namespace ompl_parc
 
         void setup() override;
         void clear() override;
+        using ompl::base::Planner::solve;  // keep solve(seconds) visible next to the override
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
         void getPlannerData(ompl::base::PlannerData &data) const override;
 

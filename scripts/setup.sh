@@ -9,7 +9,7 @@ PACKAGES=(
     libboost-dev libboost-program-options-dev libboost-serialization-dev
     libboost-filesystem-dev libboost-system-dev
     nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
-    ompl-demos python3 python3-matplotlib
+    ompl-demos python3 python3-matplotlib doxygen
     clang libclang-rt-dev
 )
 

@@ -26,10 +26,10 @@ namespace ompl_parc
 
         Robots are drawn from their collision bodies, so every robot kind is covered: a single sphere
         (a disc) becomes a circle, chained capsules (a planar arm's links) a polyline of the capsules'
-        width. Each robot is one <g class="robot"> holding its start (faded), goal (thin dashed outline), the
-        traced path of its last capsule's tip and, when animating, its moving body (<animate> of the
+        width. Each robot is one `<g class="robot">` holding its start (faded), goal (thin dashed outline), the
+        traced path of its last capsule's tip and, when animating, its moving body (`<animate>` of the
         circle's centre or the polyline's points). Obstacles are drawn as the convex hull of their
-        footprint in <g class="obstacles">. Without a plan only starts and goals are drawn. Viewable in
+        footprint in `<g class="obstacles">`. Without a plan only starts and goals are drawn. Viewable in
         any browser; static renderers show the robots at their starts. A problem that is not planar (isPlanar())
         is still drawn from above, under a note saying so and pointing to the 3D drawing (GeometryFile and
         scripts/draw_panda_cage.py), so that nobody mistakes the top view for the whole picture. */

@@ -18,10 +18,10 @@ namespace ompl_parc
         The chain runs from \e baseLink to \e tipLink; fixed joints on it are folded into the next movable
         joint's offset, and links hanging off it by fixed joints (a hand, a flange) are folded into the link
         they hang from. Movable joints off the chain make it non-serial and are rejected. Revolute joints use
-        their <limit>s; continuous joints are bounded to [-pi, pi] (a configuration space must be bounded);
+        their `<limit>`s; continuous joints are bounded to [-pi, pi] (a configuration space must be bounded);
         prismatic, planar and floating joints are rejected.
 
-        Collision geometry comes from the <collision> elements: a sphere stays a sphere, a cylinder becomes
+        Collision geometry comes from the `<collision>` elements: a sphere stays a sphere, a cylinder becomes
         the capsule around it (same axis and radius), a box the capsule along its longest axis whose radius
         is the half-diagonal of its cross-section; both contain the primitive, so robot-robot checks on the
         capsules are conservative. Meshes are rejected, naming the link. Capsule k of the body is primitive

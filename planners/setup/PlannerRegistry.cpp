@@ -133,7 +133,16 @@ void ompl_parc::PlannerRegistry::setParameter(ob::Planner &planner, const std::s
     }
     if (const auto range = numericRange(planner.params().getParams().at(key)->getRangeSuggestion()))
         parseReal(value, "parameter '" + key + "'", range->first, range->second);
-    if (!planner.params().setParam(key, value))
+    bool set = false;
+    try
+    {
+        set = planner.params().setParam(key, value);
+    }
+    catch (const std::exception &e)  // a setter's own check (ompl::Exception)
+    {
+        throw std::invalid_argument("bad value '" + value + "' for parameter '" + key + "': " + e.what());
+    }
+    if (!set)
         throw std::invalid_argument("bad value '" + value + "' for parameter '" + key + "'");
 }
 

@@ -35,7 +35,8 @@ namespace ompl_parc
 
         /** \brief Sets declared parameter \e key of \e planner to \e value; throws std::invalid_argument listing the
             valid names for an unknown key, naming the declared range for a number outside it (OMPL itself neither
-            checks ranges nor refuses "-1" for an unsigned parameter), or for a value the parameter does not take. */
+            checks ranges nor refuses "-1" for an unsigned parameter), or for a value the parameter does not take (with
+            the setter's reason if it gave one). */
         static void setParameter(ompl::base::Planner &planner, const std::string &key, const std::string &value);
 
         /** \brief The solution of \e planner (after a solve with an exact solution) on the timestep grid, as the
