@@ -10,6 +10,7 @@ PACKAGES=(
     libboost-filesystem-dev libboost-system-dev
     nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
     ompl-demos python3 python3-matplotlib doxygen
+    pybind11-dev python3-dev python3-numpy python3-pytest
     clang libclang-rt-dev
 )
 

@@ -38,4 +38,13 @@ done
 [ -f "$share/robots/panda.urdf" ] || { echo "no panda.urdf in share/"; exit 1; }
 "$bin/ompl_parc_benchmark" --check "$share/benchmarks/quick/mobile_cross_8.cfg" >/dev/null ||
     { echo "a shipped benchmark suite does not check"; exit 1; }
+# The Python module, installed into the interpreter's package folder under the prefix (when it was built).
+for module in "$tmp"/prefix/lib/python3*/*-packages/ompl_parc; do
+    [ -d "$module" ] || continue
+    PYTHONPATH=$(dirname "$module") /usr/bin/python3 -c "
+import ompl_parc
+result = ompl_parc.solve(ompl_parc.load('$share/scenarios/doorway_swap.json'), 'arc', seed=1)
+assert result.solved and ompl_parc.validate(ompl_parc.load('$share/scenarios/doorway_swap.json'), result.plan).valid
+print('install: the installed Python module solved doorway_swap.json')" || { echo "the installed Python module failed"; exit 1; }
+done
 echo "install: tools, scenarios and suites work from $tmp/elsewhere"

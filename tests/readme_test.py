@@ -12,8 +12,11 @@
            build's), except: cmake/ctest builds and scripts/{setup,build,demo,test}.sh -- the set-up and test
            commands CI itself runs from this README -- which must exist, and Google Benchmark targets, listed
            with --benchmark_list_tests (a full run takes minutes)
+  python   run from a scratch folder by the Python the module was built for, the module on its path
   text     output samples and layouts; a synopsis line starting with a tool names only options its --help has
-Usage: readme_test.py SOURCE_DIR BIN_DIR BENCHMARKS_BUILT (1 or 0: without them, their commands are skipped)
+Usage: readme_test.py SOURCE_DIR BIN_DIR BENCHMARKS_BUILT [PYTHON PYTHONPATH]
+  BENCHMARKS_BUILT: 1 or 0 (without them, their commands are skipped); without PYTHON (a build without the module),
+  python blocks are skipped
 """
 import os
 import re
@@ -24,6 +27,7 @@ import tempfile
 
 src, bindir = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
 benchmarks_built = sys.argv[3] == "1"
+python, pythonpath = (sys.argv[4], os.path.abspath(sys.argv[5])) if len(sys.argv) > 5 else (None, None)
 readme = open(os.path.join(src, "README.md")).read()
 failures = []
 counts = {}
@@ -141,6 +145,14 @@ for b in blocks:
             r = run(["bash", "-c", command], root, timeout=300)
             if r.returncode != 0:
                 fail(b, f"'{command}' exited {r.returncode}: {(r.stdout + r.stderr).strip()[-500:]}")
+    elif lang == "python":
+        if python is None:
+            continue
+        root = scratch()
+        r = subprocess.run([python, "-c", body], cwd=root, capture_output=True, text=True, timeout=300,
+                           env={**os.environ, "PYTHONPATH": pythonpath})
+        if r.returncode != 0:
+            fail(b, f"exited {r.returncode}: {(r.stdout + r.stderr).strip()[-800:]}")
     elif lang == "text":
         for line in body.split("\n"):
             words = line.split()
@@ -150,7 +162,7 @@ for b in blocks:
                     if option not in helptext:
                         fail(b, f"{words[0]} has no option {option}")
     else:
-        fail(b, f"unknown block language '{lang}': tag it cpp, cmake, ini, json, console, sh or text")
+        fail(b, f"unknown block language '{lang}': tag it cpp, cmake, ini, json, console, sh, python or text")
 
 print("README code blocks checked: " + ", ".join(f"{n} {lang}" for lang, n in sorted(counts.items())))
 for f in failures:

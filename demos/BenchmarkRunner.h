@@ -1,0 +1,63 @@
+#ifndef OMPL_PARC_DEMOS_BENCHMARK_RUNNER_
+#define OMPL_PARC_DEMOS_BENCHMARK_RUNNER_
+
+#include "ompl_parc/model/MultiRobotProblem.h"
+#include "ompl_parc/planners/setup/BenchmarkConfig.h"
+
+#include <ompl/base/Planner.h>
+
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace ompl_parc::tools
+{
+    /** \brief What a benchmark wrote and found. */
+    struct BenchmarkResults
+    {
+        /** \brief The CSV (one row per run, ResultsCsv) and the OMPL logs (one per task). */
+        std::filesystem::path csv;
+        std::vector<std::filesystem::path> logs;
+        /** \brief Solutions the independent validator refused (each also a failed run). */
+        std::size_t invalid{0};
+        /** \brief Success rate, median time and median makespan ratio per planner, as a Markdown table. */
+        std::string summary;
+    };
+
+    /** \brief One problem of the experiment, its CSV scenario label and the planners made for it. */
+    struct Instance
+    {
+        MultiRobotProblem problem;
+        std::string scenario;
+        std::size_t task{0};
+        std::vector<ompl::base::PlannerPtr> planners;
+    };
+
+    /** \brief Runs a benchmark configuration (BenchmarkConfig) with OMPL's own ompl::tools::Benchmark: run j of
+        every planner seeded with [benchmark] seed + j, every solution re-checked by the independent
+        SolutionValidator. Writes <output>/<name>.log (OMPL's log format, for ompl_benchmark_statistics; with
+        [problem] instances = N one per task, <name>_<task>.log) and <output>/<name>.csv. The tool and the Python
+        module run benchmarks through it. */
+    class BenchmarkRunner
+    {
+      public:
+        /** \brief Builds every problem and planner of \e config: every input error (a bad scenario, planner,
+            parameter or worker budget) throws here, before any run. */
+        explicit BenchmarkRunner(BenchmarkConfig config);
+        ~BenchmarkRunner();
+
+        /** \brief "NAME: K problem(s) of N robots, P planners, config ok". */
+        std::string describe() const;
+
+        /** \brief Runs everything, one line per run on \e log; throws std::invalid_argument if the output cannot
+            be written (checked before the first run). */
+        BenchmarkResults run(std::ostream &log);
+
+      private:
+        BenchmarkConfig config_;
+        std::vector<Instance> instances_;
+    };
+}  // namespace ompl_parc::tools
+
+#endif

@@ -1,0 +1,157 @@
+"""ompl_parc from Python: multi-robot motion planning with ARC, P-ARC, OR-P-ARC and the paper's baselines on OMPL.
+
+    import ompl_parc
+    problem = ompl_parc.scenario("mobile_cross", robots=8)
+    result = ompl_parc.solve(problem, "parc", workers=2, seed=1, time_limit=30)
+    if result.solved:
+        print(result.plan.makespan, ompl_parc.validate(problem, result.plan).valid)
+        times, configs = result.plan.waypoints(0)   # robot 0: timesteps and configurations (NumPy)
+
+Problems come from the built-in scenarios (scenario()), scenario files (load()) or a team built here (team() with
+disc(), planar_arm(), urdf_arm() and the obstacles box(), box2d(), sphere(), cylinder()). Bad input raises
+ValueError with the same one-line message the command-line tools print.
+"""
+import csv as _csv
+import json as _json
+import os as _os
+from typing import Any, Dict, List, Optional, Sequence
+
+from ._ompl_parc import OMPL_VERSION, Plan, Problem, SolveResult, Validation, __version__
+from ._ompl_parc import planner_names, planner_parameters, read_solution, scenario_names, set_log_level, write_solution, write_svg
+from . import _ompl_parc
+
+__all__ = ["OMPL_VERSION", "Plan", "Problem", "SolveResult", "Validation", "__version__", "box", "box2d",
+           "cylinder", "disc", "load", "planar_arm", "planner_names", "planner_parameters", "read_solution", "run_benchmark", "scenario",
+           "scenario_names", "set_log_level", "solve", "sphere", "team", "urdf_arm", "validate", "write_solution",
+           "write_svg"]
+
+
+def scenario(name: str, robots: int, task: int = 0, resolution: float = 128.0) -> Problem:
+    """A built-in scenario (scenario_names(): mobile_cross, mobile_circle, planar_cross, panda_cage, and the generated
+    families rooms, crossing, ring, field, planar_cell, panda_cell) with \\p robots robots; \\p task picks a Panda Cage
+    task or a family's random instance; \\p resolution is timesteps per unit of distance."""
+    return Problem.scenario(name, robots, task, resolution)
+
+
+def load(path: str) -> Problem:
+    """A problem from a scenario file (JSON, "format": "ompl_parc.scenario"); Problem.save(path) writes one."""
+    return Problem.load(path)
+
+
+def _pose(position: Sequence[float], orientation: Sequence[float]) -> Dict[str, Any]:
+    return {"position": list(position), "orientation": list(orientation)}
+
+
+def disc(name: str, radius: float, start: Sequence[float], goal: Sequence[float], low: Sequence[float] = (-10, -10),
+         high: Sequence[float] = (10, 10)) -> Dict[str, Any]:
+    """A disc robot moving in the plane within the box [low, high]; start and goal are (x, y)."""
+    return {"name": name, "kind": "disc", "radius": radius, "bounds": {"low": list(low), "high": list(high)},
+            "start": list(start), "goal": list(goal)}
+
+
+def planar_arm(name: str, link_lengths: Sequence[float], start: Sequence[float], goal: Sequence[float],
+               base: Sequence[float] = (0, 0, 0), link_width: float = 0.1, low: Optional[Sequence[float]] = None,
+               high: Optional[Sequence[float]] = None) -> Dict[str, Any]:
+    """A planar arm with its base at (x, y, yaw), revolute joints limited to [low, high] (default [-pi, pi])."""
+    n = len(link_lengths)
+    low = list(low) if low is not None else [-3.14159] * n
+    high = list(high) if high is not None else [3.14159] * n
+    return {"name": name, "kind": "planar_arm", "base": {"x": base[0], "y": base[1], "yaw": base[2]},
+            "link_lengths": list(link_lengths), "link_width": link_width, "joint_limits": {"low": low, "high": high},
+            "start": list(start), "goal": list(goal)}
+
+
+def urdf_arm(name: str, start: Sequence[float], goal: Sequence[float], builtin: Optional[str] = "panda",
+             urdf_file: Optional[str] = None, base_link: str = "panda_link0", tip_link: str = "panda_link8",
+             position: Sequence[float] = (0, 0, 0), orientation: Sequence[float] = (1, 0, 0, 0)) -> Dict[str, Any]:
+    """A serial arm from a URDF: a built-in model (builtin="panda") or a file (urdf_file=..., builtin=None), the
+    chain base_link .. tip_link, its base placed at position with the unit quaternion orientation (w, x, y, z)."""
+    robot: Dict[str, Any] = {"name": name, "kind": "urdf_arm", "base_link": base_link, "tip_link": tip_link,
+                             "base_pose": _pose(position, orientation), "start": list(start), "goal": list(goal)}
+    if urdf_file is not None:
+        robot["urdf_file"] = _os.path.abspath(urdf_file)
+    else:
+        robot["builtin_urdf"] = builtin
+    return robot
+
+
+def box(size: Sequence[float], position: Sequence[float] = (0, 0, 0), orientation: Sequence[float] = (1, 0, 0, 0),
+        name: str = "") -> Dict[str, Any]:
+    """A box obstacle of full extents size."""
+    return {"name": name, "shape": "box", "size": list(size), **_pose(position, orientation)}
+
+
+def box2d(center: Sequence[float], size: Sequence[float], yaw: float = 0.0, name: str = "") -> Dict[str, Any]:
+    """A 2D box obstacle (a footprint extruded over z in [-1, 1])."""
+    return {"name": name, "shape": "box2d", "center": list(center), "size": list(size), "yaw": yaw}
+
+
+def sphere(radius: float, position: Sequence[float] = (0, 0, 0), name: str = "") -> Dict[str, Any]:
+    """A sphere obstacle."""
+    return {"name": name, "shape": "sphere", "radius": radius, "position": list(position)}
+
+
+def cylinder(radius: float, length: float, position: Sequence[float] = (0, 0, 0),
+             orientation: Sequence[float] = (1, 0, 0, 0), name: str = "") -> Dict[str, Any]:
+    """A cylinder obstacle along its local z axis."""
+    return {"name": name, "shape": "cylinder", "radius": radius, "length": length, **_pose(position, orientation)}
+
+
+def team(robots: Sequence[Dict[str, Any]], obstacles: Sequence[Dict[str, Any]] = (), resolution: float = 128.0,
+         name: str = "team") -> Problem:
+    """A problem from robots (disc(), planar_arm(), urdf_arm()) among obstacles (box(), box2d(), sphere(),
+    cylinder()), checked like a scenario file (unique names, valid and collision-free starts and goals)."""
+    text = _json.dumps({"format": "ompl_parc.scenario", "version": 1, "name": name, "resolution": resolution,
+                        "obstacles": [{k: v for k, v in o.items() if k != "name" or v} for o in obstacles],
+                        "robots": list(robots)})
+    return Problem.from_json(text, _os.getcwd())
+
+
+def _parameter(value: Any) -> str:
+    if isinstance(value, bool):
+        return "1" if value else "0"
+    return str(value)
+
+
+def solve(problem: Problem, planner: str = "arc", time_limit: float = 30.0, **params: Any) -> SolveResult:
+    """Solve problem with the registry planner named planner (planner_names(): arc, parc, orparc, pp-st-rrt,
+    or-pp-st-rrt, rrtconnect, ep-rrt-c, or-rrt-c, or-ep-rrt-c; any spelling of case, '-' and '_') for at most
+    time_limit seconds; params are the planner's declared parameters (workers=2, seed=1, smooth=0.5,
+    profile="panda", ...), checked against their ranges.
+
+    Returns a SolveResult: status (OMPL's status text), solved, planner, time, plan (a Plan, or None) and properties
+    (the planner's per-stage times and counters as a dict). The GIL is released while planning; Ctrl-C stops the
+    planner (all its threads joined) and raises KeyboardInterrupt."""
+    assignments = [f"{key}={_parameter(value)}" for key, value in params.items()]
+    return _ompl_parc.solve(problem, planner, float(time_limit), assignments)
+
+
+def validate(problem: Problem, plan: Plan, substeps: int = 4) -> Validation:
+    """The independent validator's verdict (valid, message: the earliest violation) on plan for problem."""
+    return _ompl_parc.validate(problem, plan, substeps)
+
+
+def _number(text: str) -> Any:
+    for kind in (int, float):
+        try:
+            return kind(text)
+        except ValueError:
+            pass
+    return text
+
+
+def run_benchmark(config: str, verbose: bool = False, as_frame: bool = False) -> Any:
+    """Run a benchmark configuration (the INI format of ompl_parc_benchmark) and return its runs: one dict per run
+    with the CSV's columns (numbers as numbers; metrics_json parsed into "metrics"), or a pandas DataFrame with
+    as_frame=True (pandas must be installed). The OMPL log and the CSV are written as by the tool."""
+    csv_path, _summary, _invalid = _ompl_parc.run_benchmark(config, verbose)
+    with open(csv_path, newline="") as f:
+        rows: List[Dict[str, Any]] = []
+        for row in _csv.DictReader(f):
+            typed = {key: (_number(value) if value != "" else None) for key, value in row.items()}
+            typed["metrics"] = _json.loads(row["metrics_json"]) if row["metrics_json"] else {}
+            rows.append(typed)
+    if as_frame:
+        import pandas  # optional: only for as_frame
+        return pandas.DataFrame(rows)
+    return rows

@@ -1,0 +1,183 @@
+"""The Python module end to end (run by ctest as python.pytest, with PYTHONPATH at the built module and
+OMPL_PARC_BIN at the tools): every planner from Python on Mobile Cross 8, validated; plans as NumPy arrays; scenario
+and solution files round-tripped; bad input as ValueError with the tools' own message; prompt timeouts and Ctrl-C."""
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import ompl_parc
+
+BIN = os.environ.get("OMPL_PARC_BIN", "")
+
+
+def tool_message(*args):
+    """The one-line reason a tool prints for bad input, without its "tool: " prefix."""
+    run = subprocess.run([os.path.join(BIN, "ompl_parc_demo"), *args], capture_output=True, text=True)
+    assert run.returncode == 2, run.stderr
+    line = run.stderr.strip()
+    assert line.count("\n") == 0
+    return line.split(": ", 1)[1]
+
+
+@pytest.mark.parametrize("planner", ompl_parc.planner_names())
+def test_every_planner_solves_mobile_cross_8_and_validates(planner):
+    problem = ompl_parc.scenario("mobile_cross", robots=8)
+    params = {"seed": 3} if "seed" in ompl_parc.planner_parameters(planner) else {}
+    result = ompl_parc.solve(problem, planner, time_limit=60, **params)
+    assert result.solved, result.status
+    assert result.status == "Exact solution"
+    report = ompl_parc.validate(problem, result.plan)
+    assert report.valid, report.message
+    assert result.plan.makespan == max(result.plan.arrival(i) for i in range(8))
+
+
+def test_plans_are_numpy_arrays_from_start_to_goal():
+    problem = ompl_parc.scenario("mobile_cross", robots=4)
+    result = ompl_parc.solve(problem, "parc", workers=2, seed=1, smooth=0.1)
+    plan = result.plan
+    for robot in range(problem.robot_count):
+        times, configs = plan.waypoints(robot)
+        assert times.dtype == np.int64 and configs.shape == (len(times), 2)
+        assert times[0] == 0 and times[-1] == plan.arrival(robot) and np.all(np.diff(times) > 0)
+        np.testing.assert_allclose(configs[0], problem.start(robot))
+        np.testing.assert_allclose(configs[-1], problem.goal(robot), atol=1e-9)
+        dense = plan.dense(robot)
+        assert dense.shape == (plan.arrival(robot) + 1, 2)
+        # Linear between waypoints: the dense path is the waypoints' interpolation.
+        for axis in range(2):
+            np.testing.assert_allclose(np.interp(np.arange(len(dense)), times, configs[:, axis]), dense[:, axis],
+                                       atol=1e-9)
+        np.testing.assert_allclose(plan.at(robot, 10**9), problem.goal(robot), atol=1e-9)
+    assert result.properties["conflicts"] >= 1
+    assert isinstance(result.properties["initial_wall_time"], float)
+    assert result.properties["smoothing_time"] > 0
+
+
+def test_scenario_and_solution_files_round_trip(tmp_path):
+    problem = ompl_parc.team(
+        [ompl_parc.disc("west", 0.5, start=(-5, 0), goal=(5, 0)), ompl_parc.disc("east", 0.5, start=(5, 0), goal=(-5, 0)),
+         ompl_parc.planar_arm("arm", [0.5, 0.5], start=(0, 0), goal=(1.5, 0), base=(0, 6, 0))],
+        obstacles=[ompl_parc.box2d(center=(0, -4), size=(1, 2), name="pillar"), ompl_parc.sphere(0.5, (6, 6, 0))],
+        name="python_team")
+    assert problem.robot_names == ["west", "east", "arm"]
+    problem.save(str(tmp_path / "team.json"))
+    loaded = ompl_parc.load(str(tmp_path / "team.json"))
+    assert loaded.to_json() == problem.to_json() and loaded.name == "python_team"
+
+    result = ompl_parc.solve(loaded, "arc", seed=2)
+    assert result.solved, result.status
+    ompl_parc.write_solution(str(tmp_path / "solution.json"), loaded, result.plan)
+    read = ompl_parc.read_solution(str(tmp_path / "solution.json"), loaded)
+    assert read.makespan == result.plan.makespan and read.sum_of_costs == result.plan.sum_of_costs
+    for robot in range(3):
+        np.testing.assert_array_equal(read.dense(robot), result.plan.dense(robot))
+    assert ompl_parc.validate(loaded, read).valid
+    ompl_parc.write_svg(str(tmp_path / "team.svg"), loaded, read)
+    assert (tmp_path / "team.svg").read_text().startswith("<?xml")
+
+
+def test_planner_parameters_are_listed_with_their_ranges():
+    parameters = ompl_parc.planner_parameters("P-ARC")
+    assert parameters["workers"] == "1:1:64" and "seed" in parameters and "smooth" in parameters
+    assert "seed" not in ompl_parc.planner_parameters("rrtconnect")
+
+
+def test_bad_input_raises_value_error_with_the_tools_message(tmp_path):
+    with pytest.raises(ValueError) as error:
+        ompl_parc.scenario("warehouse", 4)
+    assert str(error.value) == tool_message("--scenario", "warehouse")
+    problem = ompl_parc.scenario("mobile_cross", 4)
+    with pytest.raises(ValueError) as error:
+        ompl_parc.solve(problem, "prm")
+    assert str(error.value) == tool_message("--planner", "prm")
+    with pytest.raises(ValueError) as error:
+        ompl_parc.solve(problem, "parc", workers=-1)
+    assert str(error.value) == tool_message("--planner", "parc", "--param", "workers=-1")
+    (tmp_path / "broken.json").write_text('{"format": "ompl_parc.scenario", "version": 1, "robots": [{"name": "r"}]}')
+    with pytest.raises(ValueError) as error:
+        ompl_parc.load(str(tmp_path / "broken.json"))
+    assert str(error.value) == tool_message("--scenario-file", str(tmp_path / "broken.json"))
+    with pytest.raises(ValueError, match="has no parameter 'threads'"):
+        ompl_parc.solve(problem, "arc", threads=2)
+    with pytest.raises(ValueError, match="robots\\[0\\].radius must be a positive number"):
+        ompl_parc.team([ompl_parc.disc("r", -1, (0, 0), (1, 1))])
+
+
+def test_a_short_limit_returns_promptly_as_a_timeout():
+    problem = ompl_parc.scenario("panda_cage", robots=16, task=3)
+    start = time.monotonic()
+    result = ompl_parc.solve(problem, "parc", time_limit=0.2, workers=2, profile="panda", seed=1)
+    elapsed = time.monotonic() - start
+    assert result.status == "Timeout" and not result.solved and result.plan is None
+    assert elapsed < 2.0, elapsed  # the limit plus the joins, far above the typical few milliseconds late
+
+
+def test_the_gil_is_released_while_planning():
+    ticks = []
+    done = threading.Event()
+
+    def count():
+        while not done.is_set():
+            ticks.append(1)
+            time.sleep(0.001)
+
+    counter = threading.Thread(target=count)
+    counter.start()
+    ompl_parc.solve(ompl_parc.scenario("panda_cage", robots=16, task=3), "arc", time_limit=0.5, profile="panda")
+    done.set()
+    counter.join()
+    assert len(ticks) > 50  # counted through the half second the planner held
+
+
+def test_ctrl_c_stops_a_solve_cleanly():
+    script = textwrap.dedent("""
+        import ompl_parc, sys
+        problem = ompl_parc.scenario("panda_cage", robots=16, task=3)
+        print("planning", flush=True)
+        try:
+            ompl_parc.solve(problem, "parc", time_limit=60, workers=2, profile="panda")
+        except KeyboardInterrupt:
+            print("interrupted", flush=True)
+            sys.exit(0)
+        sys.exit(1)
+    """)
+    process = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True)
+    assert process.stdout.readline().strip() == "planning"
+    time.sleep(0.5)
+    start = time.monotonic()
+    process.send_signal(signal.SIGINT)
+    out, _ = process.communicate(timeout=30)
+    assert process.returncode == 0 and out.strip() == "interrupted"
+    assert time.monotonic() - start < 5.0
+
+
+def test_a_benchmark_config_gives_its_rows(tmp_path):
+    (tmp_path / "tiny.cfg").write_text(textwrap.dedent("""
+        [problem]
+        name = tiny
+        scenario = mobile_cross
+        robots = 4
+        [benchmark]
+        time_limit = 10
+        mem_limit = 4096
+        run_count = 2
+        workers = 2
+        [planner]
+        arc =
+        parc =
+        parc.workers = 2
+        parc.name = P-ARC-2
+    """))
+    rows = ompl_parc.run_benchmark(str(tmp_path / "tiny.cfg"))
+    assert [(r["method"], r["seed"], r["success"]) for r in rows] == [
+        ("arc", 1, 1), ("arc", 2, 1), ("P-ARC-2", 1, 1), ("P-ARC-2", 2, 1)]
+    assert rows[0]["case"] == "mobile_cross_4" and rows[0]["ompl_parc_version"] == ompl_parc.__version__
+    assert rows[2]["metrics"]["conflicts"] >= 1 and rows[2]["workers"] == 2
+    assert (tmp_path / "tiny.log").exists()
