@@ -3,6 +3,7 @@
 #include "ompl_parc/Version.h"
 #include "ompl_parc/io/ScenarioFile.h"
 #include "ompl_parc/scenarios/Scenarios.h"
+#include "ompl_parc/util/NameList.h"
 #include "ompl_parc/util/ParseNumber.h"
 
 #include <ompl/util/Console.h>
@@ -29,20 +30,9 @@ ompl_parc::MultiRobotProblem ompl_parc::tools::problemFromOptions(const po::vari
     return problem;
 }
 
-namespace
-{
-    std::string join(const std::vector<std::string> &names)
-    {
-        std::string out;
-        for (const auto &n : names)
-            out += (out.empty() ? "" : ", ") + n;
-        return out;
-    }
-}  // namespace
-
 void ompl_parc::tools::addProblemOptions(po::options_description &options)
 {
-    const std::string names = join(scenarios::scenarioNames());
+    const std::string names = listNames(scenarios::scenarioNames());
     options.add_options()("scenario", po::value<std::string>()->default_value("mobile_cross"),
                           ("built-in scenario: " + names).c_str())(
         "robots", po::value<std::string>()->default_value("4"), "number of robots of the built-in scenario")(

@@ -12,20 +12,10 @@ hands over to it, or exits 2 when it is not there)
 """
 import argparse
 import json
-import os
-import sys
 
-try:
-    import matplotlib
-except ImportError:  # a python3 without it (pyenv, a venv) first on PATH: Debian's has it
-    if os.path.exists("/usr/bin/python3") and sys.executable != "/usr/bin/python3":
-        os.execv("/usr/bin/python3", ["/usr/bin/python3", os.path.abspath(__file__)] + sys.argv[1:])
-    print("draw_panda_cage.py: no matplotlib for this python3; run scripts/setup.sh (Debian's python3-matplotlib)",
-          file=sys.stderr)
-    sys.exit(2)
+from debian_matplotlib import pyplot
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402 (the backend must be chosen first)
+plt = pyplot()
 
 FORMAT = "ompl_parc.geometry"
 BOX_EDGES = [(a, b) for a in range(8) for b in range(a + 1, 8) if bin(a ^ b).count("1") == 1]

@@ -28,17 +28,9 @@ import re
 import statistics
 import sys
 
-try:
-    import matplotlib
-except ImportError:  # a python3 without it (pyenv, a venv) first on PATH: Debian's has it
-    if os.path.exists("/usr/bin/python3") and sys.executable != "/usr/bin/python3":
-        os.execv("/usr/bin/python3", ["/usr/bin/python3", os.path.abspath(__file__)] + sys.argv[1:])
-    print("plot_benchmarks.py: no matplotlib for this python3; run scripts/setup.sh (Debian's python3-matplotlib)",
-          file=sys.stderr)
-    sys.exit(2)
+from debian_matplotlib import pyplot
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402 (the backend must be chosen first)
+plt = pyplot()
 
 DIFFERENT_RUNS = "† solved a different number of runs than ARC: the speedup compares medians over different runs"
 

@@ -3,20 +3,16 @@
 every plan with the independent validator, and plot the median planning time and makespan against the workers.
 
 Usage: demos/python/example.py [--out makespan_vs_workers.png] [--robots 16]
-(PYTHONPATH=build/python for the module as built; Debian's python3-matplotlib for the plot)
+(Debian's /usr/bin/python3, for which the module is built, with python3-matplotlib; PYTHONPATH=build/python for the
+module as built)
 """
 import argparse
-import os
 import statistics
+
+import matplotlib
 
 import ompl_parc
 
-try:
-    import matplotlib
-except ImportError:  # the python3 on the path may lack it: Debian's has it (scripts/setup.sh)
-    if os.path.exists("/usr/bin/python3") and os.path.realpath(os.sys.executable) != "/usr/bin/python3":
-        os.execv("/usr/bin/python3", ["/usr/bin/python3", *os.sys.argv])
-    raise
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402 (the backend must be chosen first)
 

@@ -1,6 +1,7 @@
 #include "ompl_parc/planners/setup/BenchmarkConfig.h"
 
 #include "ompl_parc/planners/setup/PlannerRegistry.h"
+#include "ompl_parc/util/NameList.h"
 #include "ompl_parc/util/ParseNumber.h"
 #include "ompl_parc/util/TextFile.h"
 
@@ -22,13 +23,6 @@ namespace pt = boost::property_tree;
 
 namespace
 {
-    std::string join(const std::vector<std::string> &names)
-    {
-        std::string out;
-        for (const auto &n : names)
-            out += (out.empty() ? "" : ", ") + n;
-        return out;
-    }
 
     /** \brief Throws unless every key of \e section is one of \e valid, naming the valid ones. */
     void checkKeys(const pt::ptree &section, const std::string &name, const std::vector<std::string> &valid)
@@ -39,7 +33,7 @@ namespace
                 throw std::invalid_argument("[" + name + "] " + entry.first + ": nested keys are not supported");
             if (std::find(valid.begin(), valid.end(), entry.first) == valid.end())
                 throw std::invalid_argument("unknown key '" + entry.first + "' in [" + name +
-                                            "] (valid: " + join(valid) + ")");
+                                            "] (valid: " + ompl_parc::listNames(valid) + ")");
         }
     }
 
@@ -174,7 +168,7 @@ ompl_parc::BenchmarkConfig ompl_parc::BenchmarkConfig::parse(std::istream &in, c
             config.planners_.push_back({entry.first, type, entry.first, {}});
         }
     if (config.planners_.empty())
-        throw std::invalid_argument("[planner] lists no planner (valid: " + join(types) + ")");
+        throw std::invalid_argument("[planner] lists no planner (valid: " + listNames(types) + ")");
     for (const auto &entry : planners)
     {
         const auto dot = entry.first.find('.');
@@ -188,7 +182,7 @@ ompl_parc::BenchmarkConfig ompl_parc::BenchmarkConfig::parse(std::istream &in, c
             for (const auto &p : config.planners_)
                 labels.push_back(p.label);
             throw std::invalid_argument("[planner] " + entry.first + ": no planner labelled '" + label +
-                                        "' (declared: " + join(labels) + ")");
+                                        "' (declared: " + listNames(labels) + ")");
         }
         BenchmarkPlanner &planner = config.planners_[it->second];
         if (key == "name")

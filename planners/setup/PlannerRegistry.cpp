@@ -7,6 +7,7 @@
 #include "ompl_parc/planners/ORRRTConnect.h"
 #include "ompl_parc/planners/PARC.h"
 #include "ompl_parc/planners/PrioritizedSTRRT.h"
+#include "ompl_parc/util/NameList.h"
 #include "ompl_parc/util/ParseNumber.h"
 
 #include <ompl/geometric/PathSimplifier.h>
@@ -79,13 +80,6 @@ namespace
         return out;
     }
 
-    std::string join(const std::vector<std::string> &names)
-    {
-        std::string out;
-        for (const auto &n : names)
-            out += (out.empty() ? "" : ", ") + n;
-        return out;
-    }
 }  // namespace
 
 std::vector<std::string> ompl_parc::PlannerRegistry::names()
@@ -101,7 +95,7 @@ std::string ompl_parc::PlannerRegistry::canonicalName(const std::string &name)
     for (const auto &entry : planners())
         if (folded(entry.first) == folded(name))
             return entry.first;
-    throw std::invalid_argument("unknown planner '" + name + "' (valid: " + join(names()) + ")");
+    throw std::invalid_argument("unknown planner '" + name + "' (valid: " + listNames(names()) + ")");
 }
 
 ob::PlannerPtr ompl_parc::PlannerRegistry::create(const std::string &name, const ob::SpaceInformationPtr &si,
@@ -129,7 +123,7 @@ void ompl_parc::PlannerRegistry::setParameter(ob::Planner &planner, const std::s
         std::vector<std::string> valid;
         planner.params().getParamNames(valid);
         throw std::invalid_argument("planner '" + planner.getName() + "' has no parameter '" + key +
-                                    "' (valid: " + join(valid) + ")");
+                                    "' (valid: " + listNames(valid) + ")");
     }
     if (const auto range = numericRange(planner.params().getParams().at(key)->getRangeSuggestion()))
         parseReal(value, "parameter '" + key + "'", range->first, range->second);
