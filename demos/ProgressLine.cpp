@@ -37,7 +37,8 @@ std::string ompl_parc::tools::ProgressLine::describe() const
     switch (progress_->getStage())
     {
         case ArcProgress::Stage::INITIAL:
-            std::snprintf(text, sizeof(text), ", initial stage: %u of %zu robots planned",
+            // OR-P-ARC's instances each plan every robot: the count is theirs together.
+            std::snprintf(text, sizeof(text), ", initial stage: %u robot paths planned (team of %zu)",
                           progress_->getRobotsPlanned(), robots_);
             break;
         case ArcProgress::Stage::RESOLVING:

@@ -35,16 +35,6 @@ using namespace ompl_parc;
 
 namespace
 {
-    /** \brief The planner's live progress if it is of the ARC family (theirs may be read while they plan). */
-    const ArcProgress *progressOf(const ompl::base::Planner &planner)
-    {
-        if (const auto *arc = dynamic_cast<const ArcPlannerBase *>(&planner))
-            return &arc->getProgress();
-        if (const auto *orparc = dynamic_cast<const ORPARC *>(&planner))
-            return &orparc->getProgress();
-        return nullptr;
-    }
-
     /** \brief The planner's PlannerData property \e name ("" if it has none). */
     std::string propertyOf(const ompl::base::Planner &planner, const std::string &name)
     {
@@ -223,7 +213,7 @@ int main(int argc, char **argv)
                       << "planner    " << planner->getName() << "\n";
             std::optional<tools::ProgressLine> progress;
             if (vm.count("quiet") == 0)
-                progress.emplace("planning...", progressOf(*planner), si->getRobotCount());
+                progress.emplace("planning...", PlannerRegistry::progressOf(*planner), si->getRobotCount());
             const ompl::time::point start = ompl::time::now();
             // The scope lets OMPL's own planners (rrtconnect) stop inside a long motion check too.
             const auto ptc = ompl::base::timedPlannerTerminationCondition(timeLimit);

@@ -249,8 +249,8 @@ ob::PlannerStatus ompl_parc::ArcPlannerBase::solve(const ob::PlannerTerminationC
         const InnerPlannerLog::Session session;
         const ob::PlannerStatus status = solveStages(ptc);
         if (status == ob::PlannerStatus::TIMEOUT)
-            OMPL_INFORM("%s: %s (%u of %zu robots planned, %u conflicts resolved)", getName().c_str(),
-                        statusMessage_.c_str(), reportTo_->getRobotsPlanned(), mrsi_->getRobotCount(),
+            OMPL_INFORM("%s: %s (%zu of %zu robots planned, %u conflicts resolved)", getName().c_str(),
+                        statusMessage_.c_str(), loop_ ? loop_->getPlannedCount() : 0, mrsi_->getRobotCount(),
                         getStatistics().repairs);
         return status;
     }

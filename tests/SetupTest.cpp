@@ -3,6 +3,7 @@
 #include "ompl_parc/planners/setup/MultiRobotSetup.h"
 #include "ompl_parc/planners/setup/PlannerRegistry.h"
 #include "ompl_parc/robots/DiscRobot.h"
+#include "ompl_parc/scenarios/PandaCage.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 #include "ompl_parc/util/InnerPlannerLog.h"
 
@@ -115,6 +116,23 @@ TEST(MultiRobotSetup, SolvesByNameWithTypedParameters)
     EXPECT_TRUE(setup.validate().valid);
 }
 
+/* A changed goal is a new problem: the planner starts over instead of continuing the last one. */
+TEST(MultiRobotSetup, SolvesAChangedProblemAnew)
+{
+    MultiRobotSetup setup(crossingPairs());
+    setCrossing(setup);
+    setup.setPlanner("arc");
+    setup.setPlannerParameter("seed", 4);
+    ASSERT_EQ(setup.solve(60.), ob::PlannerStatus::EXACT_SOLUTION);
+    setup.setGoal("west_low", {8., -4.});
+    ASSERT_EQ(setup.solve(60.), ob::PlannerStatus::EXACT_SOLUTION);
+    const ValidationReport report = setup.validate();
+    EXPECT_TRUE(report.valid) << report.message;
+    double at[2];
+    setup.getPlan().getConfig(0, setup.getPlan().getMakespan(), at);
+    EXPECT_EQ(std::vector<double>(at, at + 2), (std::vector<double>{8., -4.}));
+}
+
 TEST(MultiRobotSetup, RefusesBadInputWithAReason)
 {
     MultiRobotSetup setup(crossingPairs());
@@ -203,6 +221,21 @@ TEST(ParcProgress, IsReadableFromAnotherThreadWhileSolving)
     }
 }
 
+/* A stop in the initial stage, when some robots have no path yet (so no arrival, no makespan): a timeout, its
+   progress at the initial stage with fewer robots planned than the team. */
+TEST(ParcProgress, StopsCleanlyInTheInitialStage)
+{
+    MultiRobotSetup setup(scenarios::createPandaCage(16, 3));
+    setup.setPlanner("arc");
+    setup.setPlannerParameter("profile", "panda");
+    setup.setPlannerParameter("seed", 1);
+    EXPECT_EQ(setup.solve(0.05), ob::PlannerStatus::TIMEOUT);
+    const auto progress = setup.getProgress();
+    EXPECT_EQ(progress.at("stage INTEGER"), "1");
+    EXPECT_LT(std::stoul(progress.at("robots planned INTEGER")), 16u);
+    EXPECT_EQ(progress.at("current makespan INTEGER"), "0");
+}
+
 namespace
 {
     /** Keeps every message OMPL logs. */
@@ -229,6 +262,7 @@ namespace
     std::string arcLog(bool shown)
     {
         CapturedLog captured;
+        ompl::msg::OutputHandler *before = ompl::msg::getOutputHandler();
         ompl::msg::useOutputHandler(&captured);
         ompl::msg::setLogLevel(ompl::msg::LOG_INFO);
         InnerPlannerLog::setShown(shown);
@@ -237,7 +271,9 @@ namespace
         setup.setPlannerParameter("seed", 1);
         const auto status = setup.solve(60.);
         EXPECT_EQ(ompl::msg::getOutputHandler(), &captured) << "the filter stayed in place after the solve";
+        // OMPL's previous handler is the one before ours again, not the filter.
         ompl::msg::restorePreviousOutputHandler();
+        EXPECT_EQ(ompl::msg::getOutputHandler(), before);
         ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
         InnerPlannerLog::setShown(false);
         EXPECT_EQ(status, ob::PlannerStatus::EXACT_SOLUTION);

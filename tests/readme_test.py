@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Every fenced code block of README.md compiles or runs, so that what a user copies works.
 
-  cpp      verbatim part (indentation aside) of a source file the build compiles (demos/, tests/; the tests run
-           them: demos/parc_simple_setup.cpp, tests/ReadmeExamplesTest.cpp)
+  cpp      verbatim part (indentation aside) of a source file every build compiles (demos/*.cpp, tests/*.cpp; the
+           tests run them: demos/parc_simple_setup.cpp, tests/ReadmeExamplesTest.cpp)
   cmake    verbatim part of tests/consumer/CMakeLists.txt (configured, built and run by install.consumer)
   ini      a benchmark configuration: ompl_parc_benchmark --check accepts it
   json     a scenario file the demo reads and plans on (solved or timed out, never refused), or, with
@@ -21,6 +21,7 @@ Usage: readme_test.py SOURCE_DIR BIN_DIR BENCHMARKS_BUILT [PYTHON PYTHONPATH]
 import os
 import re
 import shlex
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -38,10 +39,12 @@ def fail(block, why):
 
 
 def sources(*folders):
+    """The C++ sources directly in the folders: the tools and examples of demos/, the test files of tests/, all built
+    by every build (the Python binding, fuzz target and benchmarks, in subfolders, are not)."""
     texts = []
     for folder in folders:
-        for root, _, files in os.walk(os.path.join(src, folder)):
-            texts += [open(os.path.join(root, f)).read() for f in files if f.endswith((".cpp", ".h"))]
+        path = os.path.join(src, folder)
+        texts += [open(os.path.join(path, f)).read() for f in sorted(os.listdir(path)) if f.endswith(".cpp")]
     return texts
 
 
@@ -59,10 +62,14 @@ def tool(name):
     return os.path.join(bindir, name)
 
 
+scratches = []
+
+
 def scratch():
     """A folder laid out like the repository: build/bin -> the tested binaries, scripts/ and demos/ linked, an
-    empty docs/, so that commands writing build/... or docs/... write there."""
+    empty docs/, so that commands writing build/... or docs/... write there. Removed at the end."""
     root = tempfile.mkdtemp()
+    scratches.append(root)
     os.makedirs(os.path.join(root, "build"))
     os.symlink(os.path.abspath(bindir), os.path.join(root, "build", "bin"))
     for folder in ("scripts", "demos"):
@@ -164,6 +171,8 @@ for b in blocks:
     else:
         fail(b, f"unknown block language '{lang}': tag it cpp, cmake, ini, json, console, sh, python or text")
 
+for root in scratches:
+    shutil.rmtree(root, ignore_errors=True)
 print("README code blocks checked: " + ", ".join(f"{n} {lang}" for lang, n in sorted(counts.items())))
 for f in failures:
     print("FAIL: " + f)

@@ -60,9 +60,9 @@ namespace ompl_parc
         /** \brief The values as OMPL planner progress properties, for Planner::addPlannerProgressProperty: "stage
             INTEGER" (the Stage number), "robots planned INTEGER", "conflicts found INTEGER", "conflicts resolved
             INTEGER", "batches detected INTEGER", "solver calls made INTEGER", "current makespan INTEGER", "elapsed
-            REAL". The functions read this object, which must outlive them. OMPL's Benchmark also stores their final
-            values with the run's properties: the names differ from every PlannerData property of ours (one database
-            column each). */
+            REAL". The functions read this object, which must outlive them. OMPL 1.5's Benchmark also stores their
+            final values with the run's properties: the names differ from every PlannerData property of ours (one
+            database column each). */
         std::map<std::string, std::function<std::string()>> properties() const;
 
       private:

@@ -67,6 +67,11 @@ bool ompl_parc::RepairLoop::isInitialised() const
     return std::all_of(planned_.begin(), planned_.end(), [](char planned) { return planned != 0; });
 }
 
+std::size_t ompl_parc::RepairLoop::getPlannedCount() const
+{
+    return static_cast<std::size_t>(std::count(planned_.begin(), planned_.end(), 1));
+}
+
 bool ompl_parc::RepairLoop::planInitial(const ob::PlannerTerminationCondition &ptc)
 {
     StageClock clock(statistics_.initialWall, statistics_.initialCpu);
@@ -108,9 +113,10 @@ bool ompl_parc::RepairLoop::planInitial(const ob::PlannerTerminationCondition &p
             plan_.setPath(robots[k], *paths[k]);
             planned_[robots[k]] = 1;
         }
-    if (progress != nullptr)
+    const bool initialised = isInitialised();
+    if (progress != nullptr && initialised)  // a robot without a path has no arrival yet
         progress->setMakespan(plan_.getMakespan());
-    return isInitialised();
+    return initialised;
 }
 
 bool ompl_parc::RepairLoop::resolve(const ob::PlannerTerminationCondition &ptc)

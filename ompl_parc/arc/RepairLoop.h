@@ -63,6 +63,8 @@ namespace ompl_parc
         bool planInitial(const ompl::base::PlannerTerminationCondition &ptc);
         /** \brief True once every robot has its individual path. */
         bool isInitialised() const;
+        /** \brief How many robots have their individual path. */
+        std::size_t getPlannedCount() const;
 
         /** \brief Detect and repair conflicts until none is left (true) or \e ptc fires (false). */
         bool resolve(const ompl::base::PlannerTerminationCondition &ptc);

@@ -29,6 +29,10 @@ namespace
     std::mutex sessionsMutex;
     unsigned int sessions = 0;
     Filter filter;
+    /** Whether the first Session put the filter in place, and OMPL's "previous handler" (what
+        restorePreviousOutputHandler() goes back to) at that moment, given back with the handler. */
+    bool installed = false;
+    ompl::msg::OutputHandler *previous = nullptr;
 }  // namespace
 
 void ompl_parc::InnerPlannerLog::setShown(bool show)
@@ -49,17 +53,26 @@ ompl_parc::InnerPlannerLog::Session::Session()
     ompl::msg::OutputHandler *current = ompl::msg::getOutputHandler();
     if (current == nullptr || current == &filter)
         return;  // nothing is printed, or the filter is in place already
+    // OMPL keeps one "previous handler", which useOutputHandler() overwrites: read it (two swaps) to give it back.
+    ompl::msg::restorePreviousOutputHandler();
+    previous = ompl::msg::getOutputHandler();
+    ompl::msg::restorePreviousOutputHandler();
     filter.next_ = current;
     ompl::msg::useOutputHandler(&filter);
+    installed = true;
 }
 
 ompl_parc::InnerPlannerLog::Session::~Session()
 {
     const std::lock_guard<std::mutex> lock(sessionsMutex);
-    if (--sessions > 0)
+    if (--sessions > 0 || !installed)
         return;
-    if (ompl::msg::getOutputHandler() == &filter)
-        ompl::msg::useOutputHandler(filter.next_);
+    installed = false;
+    if (ompl::msg::getOutputHandler() != &filter)
+        return;  // someone put a handler of their own meanwhile: it stays
+    // As before the first Session: the handler it found, and OMPL's previous handler behind it.
+    ompl::msg::useOutputHandler(previous);
+    ompl::msg::useOutputHandler(filter.next_);
 }
 
 ompl_parc::InnerPlannerLog::Scope::Scope()

@@ -7,10 +7,12 @@ namespace ompl_parc
         repairs, every ST-RRT* of a prioritised repair logs "Created N states" at INFO, hundreds of lines per solve
         that hide the planner's own stage lines.
 
-        A Session (held by each top-level solve of ours) puts a filter in front of OMPL's output handler (and puts
-        the handler back when the last Session ends, unless someone replaced it meanwhile). The filter drops
-        messages below warnings logged on a thread inside a Scope (held around each inner planner call), unless
-        setShown(true) asked for them; everything else passes unchanged, warnings and errors always. */
+        A Session (held by each solve of the ARC family and PP-ST-RRT, and MultiRobotSetup::simplify) puts a filter
+        in front of OMPL's output handler; when the last Session ends, the handler and OMPL's "previous handler"
+        (restorePreviousOutputHandler()) are as before the first began, unless someone installed a handler of
+        their own meanwhile, which stays. The filter drops messages below warnings logged on a thread inside a Scope
+        (held around each inner planner call), unless setShown(true) asked for them; everything else passes
+        unchanged, warnings and errors always. */
     class InnerPlannerLog
     {
       public:

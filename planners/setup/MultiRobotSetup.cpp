@@ -62,6 +62,7 @@ void ompl_parc::MultiRobotSetup::setStart(std::size_t robot, const std::vector<d
 {
     checkConfiguration(robot, configuration);
     starts_[robot] = configuration;
+    changed_ = true;
 }
 
 void ompl_parc::MultiRobotSetup::setStart(const std::string &robot, const std::vector<double> &configuration)
@@ -73,6 +74,7 @@ void ompl_parc::MultiRobotSetup::setGoal(std::size_t robot, const std::vector<do
 {
     checkConfiguration(robot, configuration);
     goals_[robot] = configuration;
+    changed_ = true;
 }
 
 void ompl_parc::MultiRobotSetup::setGoal(const std::string &robot, const std::vector<double> &configuration)
@@ -125,6 +127,13 @@ ob::PlannerStatus ompl_parc::MultiRobotSetup::solve(const ob::PlannerTermination
     setup_.setStartAndGoalStates(
         ob::ScopedState<>(si_->getStateSpace(), pdef->getStartState(0)),
         ob::ScopedState<>(si_->getStateSpace(), pdef->getGoal()->as<ob::GoalState>()->getState()), 1e-9);
+    if (changed_)
+    {
+        // A planner continues its last problem (OMPL's convention for a repeated solve()): start it over.
+        getPlanner()->clear();
+        setup_.getProblemDefinition()->clearSolutionPaths();
+        changed_ = false;
+    }
     plan_.reset();
     const ob::PlannerStatus status = setup_.solve(ptc);
     if (status == ob::PlannerStatus::EXACT_SOLUTION)

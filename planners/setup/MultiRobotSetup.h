@@ -91,7 +91,9 @@ namespace ompl_parc
                 setPlannerParameterText(key, std::string(value));
         }
 
-        /** \brief Solves from the starts to the goals (getProblem()) with the planner, for at most \e seconds. */
+        /** \brief Solves from the starts to the goals (getProblem()) with the planner, for at most \e seconds. After a
+            change of a start or goal the planner starts over (clear()); otherwise a later solve() continues where the
+            last one stopped (OMPL's convention: a timed-out ARC resumes its repairs). */
         ompl::base::PlannerStatus solve(double seconds);
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc);
         /** \brief Wall seconds of the last solve(). */
@@ -125,6 +127,8 @@ namespace ompl_parc
         ompl::geometric::SimpleSetup setup_;
         std::string name_;
         std::vector<std::optional<std::vector<double>>> starts_, goals_;
+        /** \brief Whether a start or goal changed since the last solve(). */
+        bool changed_{true};
         /** \brief The last solve()'s exact solution, per robot. */
         std::optional<MultiRobotPlan> plan_;
     };

@@ -140,6 +140,15 @@ void ompl_parc::PlannerRegistry::setParameter(ob::Planner &planner, const std::s
         throw std::invalid_argument("bad value '" + value + "' for parameter '" + key + "'");
 }
 
+const ompl_parc::ArcProgress *ompl_parc::PlannerRegistry::progressOf(const ob::Planner &planner)
+{
+    if (const auto *arc = dynamic_cast<const ArcPlannerBase *>(&planner))
+        return &arc->getProgress();
+    if (const auto *orparc = dynamic_cast<const ORPARC *>(&planner))
+        return &orparc->getProgress();
+    return nullptr;
+}
+
 ompl_parc::MultiRobotPlan ompl_parc::PlannerRegistry::planOf(const ob::Planner &planner,
                                                              const MultiRobotSpaceInformationPtr &si, bool simplify)
 {

@@ -1,6 +1,7 @@
 #ifndef OMPL_PARC_PLANNERS_SETUP_PLANNER_REGISTRY_
 #define OMPL_PARC_PLANNERS_SETUP_PLANNER_REGISTRY_
 
+#include "ompl_parc/arc/ArcProgress.h"
 #include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/model/MultiRobotSpaceInformation.h"
 
@@ -46,6 +47,10 @@ namespace ompl_parc
             the ProblemDefinition is simplified in place). */
         static MultiRobotPlan planOf(const ompl::base::Planner &planner, const MultiRobotSpaceInformationPtr &si,
                                      bool simplify);
+
+        /** \brief The live progress of \e planner if it is of the ARC family (ARC, PARC, ORPARC), which may be read
+            from another thread while it plans; null for other planners. */
+        static const ArcProgress *progressOf(const ompl::base::Planner &planner);
     };
 }  // namespace ompl_parc
 

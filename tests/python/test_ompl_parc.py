@@ -60,6 +60,28 @@ def test_plans_are_numpy_arrays_from_start_to_goal():
     assert result.properties["smoothing_time"] > 0
 
 
+def test_waypoints_keep_a_wait_before_a_move(tmp_path):
+    # r0 holds its start for 100 timesteps, then crosses; r1 crosses at once and waits for nothing: the waypoints
+    # must hold r0 still until t=100 (not spread its motion over the wait).
+    (tmp_path / "wait.json").write_text(
+        '{"format": "ompl_parc.solution", "version": 2, "resolution": 128, "robots": ['
+        '{"name": "r0", "kind": "disc", "arrival": 753, "pieces": [[0, 0, 0, [5, 0], [5, 0]],'
+        ' [100, 0, 653, [5, 0], [0, 1]], [753, 0, 0, [0, 1], [0, 1]]]},'
+        '{"name": "r1", "kind": "disc", "arrival": 1306, "pieces": [[0, 0, 653, [-5, 0], [0, -1]],'
+        ' [653, 0, 653, [0, -1], [5, 0]]]}]}')
+    problem = ompl_parc.team([ompl_parc.disc("r0", 0.5, (5, 0), (0, 1)), ompl_parc.disc("r1", 0.5, (-5, 0), (5, 0))])
+    plan = ompl_parc.read_solution(str(tmp_path / "wait.json"), problem)
+    times, configs = plan.waypoints(0)
+    assert {99, 100} <= set(times) and times[0] == 0 and times[-1] == 753
+    np.testing.assert_allclose(configs[list(times).index(99)], (5, 0))
+    for robot in range(2):
+        times, configs = plan.waypoints(robot)
+        dense = plan.dense(robot)
+        for axis in range(2):
+            np.testing.assert_allclose(np.interp(np.arange(len(dense)), times, configs[:, axis]), dense[:, axis],
+                                       atol=1e-9)
+
+
 def test_scenario_and_solution_files_round_trip(tmp_path):
     problem = ompl_parc.team(
         [ompl_parc.disc("west", 0.5, start=(-5, 0), goal=(5, 0)), ompl_parc.disc("east", 0.5, start=(5, 0), goal=(-5, 0)),
@@ -148,13 +170,14 @@ def test_ctrl_c_stops_a_solve_cleanly():
             sys.exit(0)
         sys.exit(1)
     """)
-    process = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True)
+    process = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               text=True)
     assert process.stdout.readline().strip() == "planning"
     time.sleep(0.5)
     start = time.monotonic()
     process.send_signal(signal.SIGINT)
-    out, _ = process.communicate(timeout=30)
-    assert process.returncode == 0 and out.strip() == "interrupted"
+    out, err = process.communicate(timeout=30)
+    assert process.returncode == 0 and out.strip() == "interrupted", out + err
     assert time.monotonic() - start < 5.0
 
 

@@ -43,24 +43,17 @@ namespace
         py::dict properties;
     };
 
-    /** \brief One robot's motion as breakpoints: the timesteps where one of its straight motions starts or reaches
-        its end, and its arrival, with the configuration at each; linear in between, this is the plan's motion. */
+    /** \brief One robot's motion as breakpoints (TimedPath::appendBreakpoints: where a straight motion or a hold
+        starts or ends, and the arrival) with the configuration at each; linear in between, this is the plan's
+        motion. */
     py::tuple waypoints(const MultiRobotPlan &plan, std::size_t robot)
     {
         if (robot >= plan.getRobotCount())
             throw std::invalid_argument("no robot " + std::to_string(robot) + " (the plan has " +
                                         std::to_string(plan.getRobotCount()) + ")");
         const TimedPath &path = plan.getPath(robot);
-        std::vector<std::size_t> times;
-        for (std::size_t k = 0; k < path.getPieceCount(); ++k)
-        {
-            const TimedPath::Piece &piece = path.getPiece(k);
-            const std::size_t next = k + 1 < path.getPieceCount() ? path.getPiece(k + 1).start : path.getArrival();
-            times.push_back(piece.start);
-            if (piece.steps > piece.offset && piece.start + (piece.steps - piece.offset) < next)
-                times.push_back(piece.start + (piece.steps - piece.offset));
-        }
-        times.push_back(path.getArrival());
+        std::vector<std::size_t> times{0, path.getArrival()};
+        path.appendBreakpoints(times);
         std::sort(times.begin(), times.end());
         times.erase(std::unique(times.begin(), times.end()), times.end());
         const auto d = static_cast<py::ssize_t>(plan.getDimension(robot));
@@ -132,18 +125,19 @@ namespace
         MultiRobotSetup setup(problem);
         setup.setPlanner(PlannerRegistry::create(name, problem.getSpaceInformation(), params));
         ob::PlannerStatus status;
-        bool interrupted = false;
+        bool listened = false;
         {
+            const python::InterruptScope interrupt;  // with the GIL: raises a Ctrl-C that came just before
+            listened = interrupt.listens();
             const py::gil_scoped_release released;
-            const python::InterruptScope interrupt;
             const auto ptc = ob::plannerOrTerminationCondition(
                 ob::timedPlannerTerminationCondition(timeLimit),
-                ob::PlannerTerminationCondition([] { return python::InterruptScope::fired(); }));
+                ob::PlannerTerminationCondition([listened] { return listened && python::InterruptScope::fired(); }));
             const StopSignal::Scope scope(ptc);
             status = setup.solve(ptc);
-            interrupted = python::InterruptScope::fired();
         }
-        if (interrupted)
+        // Read after the scope gave SIGINT back to Python: a Ctrl-C in between reached one of the two.
+        if (listened && python::InterruptScope::fired())
         {
             PyErr_SetNone(PyExc_KeyboardInterrupt);
             throw py::error_already_set();

@@ -14,10 +14,11 @@ ValueError with the same one-line message the command-line tools print.
 import csv as _csv
 import json as _json
 import os as _os
+import warnings as _warnings
 from typing import Any, Dict, List, Optional, Sequence
 
 from ._ompl_parc import OMPL_VERSION, Plan, Problem, SolveResult, Validation, __version__
-from ._ompl_parc import planner_names, planner_parameters, read_solution, scenario_names, set_log_level, write_solution, write_svg
+from ._ompl_parc import planner_names, planner_parameters, read_solution, scenario_names, write_solution, write_svg
 from . import _ompl_parc
 
 __all__ = ["OMPL_VERSION", "Plan", "Problem", "SolveResult", "Validation", "__version__", "box", "box2d",
@@ -107,6 +108,17 @@ def team(robots: Sequence[Dict[str, Any]], obstacles: Sequence[Dict[str, Any]] =
     return Problem.from_json(text, _os.getcwd())
 
 
+_LOG_LEVELS = {"debug": 0, "info": 1, "warn": 2, "error": 3, "none": 4}
+
+
+def set_log_level(level: str) -> None:
+    """OMPL's log level for everything ompl_parc logs: "debug" (every conflict and repair), "info" (the planners'
+    stages), "warn" (the default here), "error" or "none"."""
+    if level not in _LOG_LEVELS:
+        raise ValueError(f"unknown log level '{level}' (valid: {', '.join(_LOG_LEVELS)})")
+    _ompl_parc.set_log_level(_LOG_LEVELS[level])
+
+
 def _parameter(value: Any) -> str:
     if isinstance(value, bool):
         return "1" if value else "0"
@@ -131,7 +143,15 @@ def validate(problem: Problem, plan: Plan, substeps: int = 4) -> Validation:
     return _ompl_parc.validate(problem, plan, substeps)
 
 
-def _number(text: str) -> Any:
+_TEXT_COLUMNS = {"case", "case_title", "method", "metrics_json", "scenario", "type", "status", "ompl_parc_version"}
+
+
+def _typed(column: str, text: str) -> Any:
+    """A CSV cell as the number it is (int or float), text for the text columns, None when empty."""
+    if text == "":
+        return None
+    if column in _TEXT_COLUMNS:
+        return text
     for kind in (int, float):
         try:
             return kind(text)
@@ -143,12 +163,16 @@ def _number(text: str) -> Any:
 def run_benchmark(config: str, verbose: bool = False, as_frame: bool = False) -> Any:
     """Run a benchmark configuration (the INI format of ompl_parc_benchmark) and return its runs: one dict per run
     with the CSV's columns (numbers as numbers; metrics_json parsed into "metrics"), or a pandas DataFrame with
-    as_frame=True (pandas must be installed). The OMPL log and the CSV are written as by the tool."""
-    csv_path, _summary, _invalid = _ompl_parc.run_benchmark(config, verbose)
+    as_frame=True (pandas must be installed). The OMPL log and the CSV are written as by the tool. A solution the
+    independent validator refuses is a failed run (success 0, the reason in metrics["validation"]) and a warning.
+    Ctrl-C takes effect when the benchmark ends (OMPL's Benchmark takes no termination condition of ours)."""
+    csv_path, _summary, invalid = _ompl_parc.run_benchmark(config, verbose)
+    if invalid:
+        _warnings.warn(f"{invalid} solution(s) failed the independent validation (see the rows' metrics['validation'])")
     with open(csv_path, newline="") as f:
         rows: List[Dict[str, Any]] = []
         for row in _csv.DictReader(f):
-            typed = {key: (_number(value) if value != "" else None) for key, value in row.items()}
+            typed = {key: _typed(key, value) for key, value in row.items()}
             typed["metrics"] = _json.loads(row["metrics_json"]) if row["metrics_json"] else {}
             rows.append(typed)
     if as_frame:
