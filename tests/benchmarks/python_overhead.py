@@ -25,9 +25,9 @@ def main():
     problem = ompl_parc.scenario("mobile_cross", robots=args.robots)
     cpp, python, makespans = [], [], set()
     for _ in range(args.rounds):
-        run = subprocess.run([f"{args.bin}/ompl_parc_demo", "--scenario", "mobile_cross", "--robots",
-                              str(args.robots), "--planner", "arc", "--seed", "1", "--smooth", "0", "--no-validate"],
-                             capture_output=True, text=True, check=True)
+        demo = [f"{args.bin}/ompl_parc_demo", "--scenario", "mobile_cross", "--robots", str(args.robots),
+                "--planner", "arc", "--param", "seed=1", "--smooth", "0", "--no-validate"]
+        run = subprocess.run(demo, capture_output=True, text=True, check=True)
         cpp.append(float(re.search(r"^status .* after ([0-9.]+) s", run.stdout, re.M).group(1)))
         makespans.add(int(re.search(r"^makespan +([0-9]+)", run.stdout, re.M).group(1)))
         start = time.perf_counter()
