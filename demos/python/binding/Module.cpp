@@ -2,20 +2,16 @@
    the independent validator, solution files, pictures and benchmarks. demos/python/package/ompl_parc/__init__.py wraps
    it with keyword arguments, type hints and docstrings. Bad input raises ValueError with the tools' one-line message.
  */
-#include "BenchmarkRunner.h"
-#include "InterruptScope.h"
+#include "Solve.h"
 
 #include "ompl_parc/Version.h"
 #include "ompl_parc/io/ScenarioFile.h"
 #include "ompl_parc/io/SolutionFile.h"
 #include "ompl_parc/io/SvgWriter.h"
-#include "ompl_parc/planners/setup/BenchmarkConfig.h"
-#include "ompl_parc/planners/setup/MultiRobotSetup.h"
 #include "ompl_parc/planners/setup/PlannerRegistry.h"
 #include "ompl_parc/scenarios/Scenarios.h"
-#include "ompl_parc/util/StopSignal.h"
+#include "ompl_parc/validation/SolutionValidator.h"
 
-#include <ompl/base/PlannerData.h>
 #include <ompl/util/Console.h>
 #include <ompl/util/Exception.h>
 #include <pybind11/numpy.h>
@@ -24,25 +20,12 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <fstream>
 
 namespace py = pybind11;
-namespace ob = ompl::base;
 using namespace ompl_parc;
 
 namespace
 {
-    /** \brief How a solve from Python ended. */
-    struct SolveResult
-    {
-        std::string status, planner, message;
-        bool solved{false};
-        double time{0.};
-        std::optional<MultiRobotPlan> plan;
-        /** \brief The planner's PlannerData properties, typed by their OMPL type suffix. */
-        py::dict properties;
-    };
-
     /** \brief One robot's motion as breakpoints (TimedPath::appendBreakpoints: where a straight motion or a hold
         starts or ends, and the arrival) with the configuration at each; linear in between, this is the plan's
         motion. */
@@ -84,90 +67,6 @@ namespace
         return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
     }
 
-    /** \brief The "name TYPE" properties as {name: value} with REAL as float, INTEGER as int, BOOLEAN as bool. */
-    py::dict typedProperties(const std::map<std::string, std::string> &properties)
-    {
-        py::dict out;
-        for (const auto &[key, value] : properties)
-        {
-            const auto space = key.rfind(' ');
-            const std::string name = space == std::string::npos ? key : key.substr(0, space),
-                              type = space == std::string::npos ? "" : key.substr(space + 1);
-            try
-            {
-                if (type == "REAL")
-                    out[py::str(name)] = std::stod(value);
-                else if (type == "INTEGER" || type == "ENUM")
-                    out[py::str(name)] = std::stoll(value);
-                else if (type == "BOOLEAN")
-                    out[py::str(name)] = value == "1" || value == "true";
-                else
-                    out[py::str(name)] = value;
-            }
-            catch (const std::exception &)  // "nan", "inf" or empty: keep the text
-            {
-                out[py::str(name)] = value;
-            }
-        }
-        return out;
-    }
-
-    /** \brief Solves \e problem with registry planner \e name and \e params ("key=value") for at most \e timeLimit
-        seconds, the GIL released; Ctrl-C stops the planner (all workers joined) and raises KeyboardInterrupt. */
-    SolveResult solve(const MultiRobotProblem &problem, const std::string &name, double timeLimit,
-                      const std::vector<std::string> &params)
-    {
-        if (!(timeLimit > 0.) || !(timeLimit <= 1e7))
-            throw std::invalid_argument("time_limit must be a number above 0 and at most 1e+07 (got " +
-                                        std::to_string(timeLimit) + ")");
-        if (const std::string reason = problem.checkEndpoints(); !reason.empty())
-            throw std::invalid_argument(reason);
-        MultiRobotSetup setup(problem);
-        setup.setPlanner(PlannerRegistry::create(name, problem.getSpaceInformation(), params));
-        ob::PlannerStatus status;
-        bool listened = false;
-        {
-            const python::InterruptScope interrupt;  // with the GIL: raises a Ctrl-C that came just before
-            listened = interrupt.listens();
-            const py::gil_scoped_release released;
-            const auto ptc = ob::plannerOrTerminationCondition(
-                ob::timedPlannerTerminationCondition(timeLimit),
-                ob::PlannerTerminationCondition([listened] { return listened && python::InterruptScope::fired(); }));
-            const StopSignal::Scope scope(ptc);
-            status = setup.solve(ptc);
-        }
-        // Read after the scope gave SIGINT back to Python: a Ctrl-C in between reached one of the two.
-        if (listened && python::InterruptScope::fired())
-        {
-            PyErr_SetNone(PyExc_KeyboardInterrupt);
-            throw py::error_already_set();
-        }
-        SolveResult result;
-        result.status = status.asString();
-        result.planner = setup.getPlanner()->getName();
-        result.time = setup.getLastPlanComputationTime();
-        result.solved = status == ob::PlannerStatus::EXACT_SOLUTION;
-        if (result.solved)
-            result.plan = setup.getPlan();
-        ob::PlannerData data(problem.getSpaceInformation());
-        setup.getPlanner()->getPlannerData(data);
-        result.properties = typedProperties(data.properties);
-        return result;
-    }
-
-    /** \brief Runs benchmark configuration \e path (BenchmarkRunner), the GIL released; returns the CSV's path and
-        the summary table. With \e verbose a line per run goes to stderr. */
-    py::tuple runBenchmark(const std::string &path, bool verbose)
-    {
-        tools::BenchmarkRunner runner(BenchmarkConfig::read(path));
-        std::ofstream quiet;  // not open: discards what it is given
-        tools::BenchmarkResults results;
-        {
-            const py::gil_scoped_release released;
-            results = runner.run(verbose ? std::cerr : static_cast<std::ostream &>(quiet));
-        }
-        return py::make_tuple(results.csv.string(), results.summary, results.invalid);
-    }
 }  // namespace
 
 PYBIND11_MODULE(_ompl_parc, m)
@@ -260,14 +159,14 @@ PYBIND11_MODULE(_ompl_parc, m)
             },
             py::arg("robot"), py::arg("t"));
 
-    py::class_<SolveResult>(m, "SolveResult")
-        .def_readonly("status", &SolveResult::status)
-        .def_readonly("solved", &SolveResult::solved)
-        .def_readonly("planner", &SolveResult::planner)
-        .def_readonly("time", &SolveResult::time)
-        .def_readonly("plan", &SolveResult::plan)
-        .def_readonly("properties", &SolveResult::properties);
-    m.def("solve", &solve, py::arg("problem"), py::arg("planner"), py::arg("time_limit"), py::arg("params"));
+    py::class_<python::SolveResult>(m, "SolveResult")
+        .def_readonly("status", &python::SolveResult::status)
+        .def_readonly("solved", &python::SolveResult::solved)
+        .def_readonly("planner", &python::SolveResult::planner)
+        .def_readonly("time", &python::SolveResult::time)
+        .def_readonly("plan", &python::SolveResult::plan)
+        .def_readonly("properties", &python::SolveResult::properties);
+    m.def("solve", &python::solve, py::arg("problem"), py::arg("planner"), py::arg("time_limit"), py::arg("params"));
 
     py::class_<ValidationReport>(m, "Validation")
         .def_readonly("valid", &ValidationReport::valid)
@@ -297,5 +196,5 @@ PYBIND11_MODULE(_ompl_parc, m)
             SvgWriter::write(path, problem, plan, options);
         },
         py::arg("path"), py::arg("problem"), py::arg("plan") = nullptr, py::arg("animate") = true);
-    m.def("run_benchmark", &runBenchmark, py::arg("path"), py::arg("verbose") = false);
+    m.def("run_benchmark", &python::runBenchmark, py::arg("path"), py::arg("verbose") = false);
 }
