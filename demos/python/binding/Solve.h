@@ -15,7 +15,7 @@ namespace ompl_parc::python
     /** \brief How a solve from Python ended. */
     struct SolveResult
     {
-        std::string status, planner, message;
+        std::string status, planner;
         bool solved{false};
         double time{0.};
         std::optional<MultiRobotPlan> plan;
