@@ -1,4 +1,5 @@
 #include "ResultsCsv.h"
+#include "ToolSupport.h"
 
 #include "ompl_parc/Version.h"
 
@@ -67,11 +68,9 @@ namespace
     std::string metricsJson(const std::map<std::string, std::string> &properties)
     {
         nlohmann::json metrics = nlohmann::json::object();
-        for (const auto &[name, value] : properties)
+        for (const auto &[property, value] : properties)
         {
-            const auto space = name.rfind(' ');
-            const std::string key = space == std::string::npos ? name : name.substr(0, space),
-                              type = space == std::string::npos ? "" : name.substr(space + 1);
+            const auto [key, type] = ompl_parc::tools::splitPropertyKey(property);
             char *end = nullptr;
             const double number = std::strtod(value.c_str(), &end);
             const bool numeric =

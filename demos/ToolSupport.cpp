@@ -49,6 +49,14 @@ namespace
     };
 }  // namespace
 
+std::pair<std::string, std::string> ompl_parc::tools::splitPropertyKey(const std::string &key)
+{
+    const auto space = key.rfind(' ');
+    if (space == std::string::npos)
+        return {key, ""};
+    return {key.substr(0, space), key.substr(space + 1)};
+}
+
 std::string ompl_parc::tools::versionLine()
 {
     return std::string("ompl_parc ") + OMPL_PARC_VERSION + " (OMPL " + OMPL_PARC_OMPL_VERSION + ")";

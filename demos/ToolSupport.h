@@ -6,6 +6,7 @@
 #include <boost/program_options.hpp>
 #include <functional>
 #include <string>
+#include <utility>
 
 namespace ompl_parc::tools
 {
@@ -24,6 +25,10 @@ namespace ompl_parc::tools
         its starts and goals; throws (std::invalid_argument, ompl::Exception) with a one-line reason on
         bad input. */
     MultiRobotProblem problemFromOptions(const boost::program_options::variables_map &vm);
+
+    /** \brief An OMPL property key "name TYPE" ("conflicts INTEGER", as in PlannerData and Benchmark run properties)
+        split into its name and its type ("" where the key has none). */
+    std::pair<std::string, std::string> splitPropertyKey(const std::string &key);
 
     /** \brief "ompl_parc VERSION (OMPL VERSION)", what --version prints. */
     std::string versionLine();

@@ -123,12 +123,12 @@ ob::PlannerStatus ompl_parc::MultiRobotSetup::solve(const ob::PlannerTermination
 {
     if (!getPlanner())
         throw std::invalid_argument("set a planner (setPlanner) before solve()");
-    const ob::ProblemDefinitionPtr pdef = getProblem().createProblemDefinition();
-    setup_.setStartAndGoalStates(
-        ob::ScopedState<>(si_->getStateSpace(), pdef->getStartState(0)),
-        ob::ScopedState<>(si_->getStateSpace(), pdef->getGoal()->as<ob::GoalState>()->getState()), 1e-9);
     if (changed_)
     {
+        const ob::ProblemDefinitionPtr pdef = getProblem().createProblemDefinition();
+        setup_.setStartAndGoalStates(
+            ob::ScopedState<>(si_->getStateSpace(), pdef->getStartState(0)),
+            ob::ScopedState<>(si_->getStateSpace(), pdef->getGoal()->as<ob::GoalState>()->getState()), 1e-9);
         // A planner continues its last problem (OMPL's convention for a repeated solve()): start it over.
         getPlanner()->clear();
         setup_.getProblemDefinition()->clearSolutionPaths();

@@ -2,6 +2,7 @@
 
 #include "BenchmarkRunner.h"
 #include "InterruptScope.h"
+#include "ToolSupport.h"
 
 #include "ompl_parc/planners/setup/BenchmarkConfig.h"
 #include "ompl_parc/planners/setup/MultiRobotSetup.h"
@@ -24,9 +25,7 @@ namespace
         py::dict out;
         for (const auto &[key, value] : properties)
         {
-            const auto space = key.rfind(' ');
-            const std::string name = space == std::string::npos ? key : key.substr(0, space),
-                              type = space == std::string::npos ? "" : key.substr(space + 1);
+            const auto [name, type] = ompl_parc::tools::splitPropertyKey(key);
             try
             {
                 if (type == "REAL")
