@@ -124,6 +124,7 @@ TEST(MultiRobotSetup, SolvesAChangedProblemAnew)
     setup.setPlanner("arc");
     setup.setPlannerParameter("seed", 4);
     ASSERT_EQ(setup.solve(60.), ob::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_TRUE(setup.validate().valid);
     setup.setGoal("west_low", {8., -4.});
     ASSERT_EQ(setup.solve(60.), ob::PlannerStatus::EXACT_SOLUTION);
     const ValidationReport report = setup.validate();
@@ -270,6 +271,7 @@ namespace
         setup.setPlanner("arc");
         setup.setPlannerParameter("seed", 1);
         const auto status = setup.solve(60.);
+        EXPECT_TRUE(status != ob::PlannerStatus::EXACT_SOLUTION || setup.validate().valid);
         EXPECT_EQ(ompl::msg::getOutputHandler(), &captured) << "the filter stayed in place after the solve";
         // OMPL's previous handler is the one before ours again, not the filter.
         ompl::msg::restorePreviousOutputHandler();

@@ -48,6 +48,7 @@ def test_plans_are_numpy_arrays_from_start_to_goal():
     problem = ompl_parc.scenario("mobile_cross", robots=4)
     result = ompl_parc.solve(problem, "parc", workers=2, seed=1, smooth=0.1)
     plan = result.plan
+    assert ompl_parc.validate(problem, plan).valid
     for robot in range(problem.robot_count):
         times, configs = plan.waypoints(robot)
         assert times.dtype == np.int64 and configs.shape == (len(times), 2)
