@@ -14,11 +14,14 @@
 #include <ompl/tools/benchmark/Benchmark.h>
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <sstream>
+#include <tuple>
 
 namespace ob = ompl::base;
 using namespace ompl_parc;
@@ -137,50 +140,56 @@ namespace
         }
     }
 
-    /** \brief Run every planner of \e instance run_count times with OMPL's Benchmark, write its log to \e logPath
-        and one CSV row per run, and tally the runs (a line per run on \e log); returns the number of invalid
-        solutions. */
-    std::size_t runInstance(const BenchmarkConfig &config, const Instance &instance,
-                            const std::filesystem::path &logPath, tools::ResultsCsv &csv, Tally &tally,
-                            std::ostream &log)
+    /** \brief OMPL's Benchmark whose experiment is assembled from run records instead of run: its log is OMPL's own
+        format, whichever process did the runs. */
+    class MergedBenchmark : public ompl::tools::Benchmark
     {
-        const MultiRobotProblem &problem = instance.problem;
+      public:
+        using ompl::tools::Benchmark::Benchmark;
+        CompleteExperiment &experiment() { return exp_; }
+    };
+
+    /** \brief A SimpleSetup for \e problem's start and goal with \e planner (else SimpleSetup allocates a default
+        planner it never runs). */
+    std::unique_ptr<ompl::geometric::SimpleSetup> setupFor(const MultiRobotProblem &problem,
+                                                           const ob::PlannerPtr &planner)
+    {
         const auto &si = problem.getSpaceInformation();
-        const auto &planners = instance.planners;
-        ompl::geometric::SimpleSetup setup(si);
+        auto setup = std::make_unique<ompl::geometric::SimpleSetup>(si);
         ob::ScopedState<> start(si), goal(si);
         const auto pdef = problem.createProblemDefinition();
         start = pdef->getStartState(0);
         goal = pdef->getGoal()->as<ob::GoalState>()->getState();
-        setup.setStartAndGoalStates(start, goal);
-        setup.setPlanner(planners.front());  // else SimpleSetup allocates a default planner it never runs
+        setup->setStartAndGoalStates(start, goal);
+        setup->setPlanner(planner);
+        return setup;
+    }
 
-        ompl::tools::Benchmark benchmark(setup, config.getProblemName());
-        benchmark.addExperimentParameter("robots", "INTEGER", std::to_string(si->getRobotCount()));
-        benchmark.addExperimentParameter("resolution", "REAL", std::to_string(si->getResolution()));
-        benchmark.addExperimentParameter("base_seed", "INTEGER", std::to_string(config.getSeed()));
-        benchmark.addExperimentParameter("worker_budget", "INTEGER", std::to_string(config.getWorkers()));
-        benchmark.addExperimentParameter("task", "INTEGER", std::to_string(instance.task));
-        benchmark.addExperimentParameter("ompl_parc_version", "VARCHAR(32)", OMPL_PARC_VERSION);
-        for (const auto &planner : planners)
-            benchmark.addPlanner(planner);
-
-        const auto seedOf = [&] { return config.getSeed() + benchmark.getStatus().activeRun; };
+    /** \brief Run \e run (seed [benchmark] seed + run) of planner \e p of \e instance with OMPL's Benchmark; the
+        solution re-checked by the independent validator; a line on \e log. */
+    tools::RunRecord runOnce(const BenchmarkConfig &config, const Instance &instance, std::size_t instanceIndex,
+                             std::size_t p, std::size_t run, std::ostream &log, const std::string &counter)
+    {
+        const MultiRobotProblem &problem = instance.problem;
+        const auto &si = problem.getSpaceInformation();
+        const ob::PlannerPtr &planner = instance.planners.at(p);
+        const auto setup = setupFor(problem, planner);
+        ompl::tools::Benchmark benchmark(*setup, config.getProblemName());
+        benchmark.addPlanner(planner);
+        const unsigned int seed = config.getSeed() + static_cast<unsigned int>(run);
         benchmark.setPreRunEvent(
             [&](const ob::PlannerPtr &planner)
             {
                 if (planner->params().hasParam("seed"))
-                    planner->params().setParam("seed", std::to_string(seedOf()));
+                    planner->params().setParam("seed", std::to_string(seed));
             });
 
-        const SolutionValidator validator(problem);
-        const std::size_t total = planners.size() * config.getRunCount();
-        std::size_t done = 0, invalid = 0;
-        std::map<std::string, std::string> typeOf;
-        for (const auto &entry : config.getPlanners())
-            typeOf[entry.name] = entry.type;
+        tools::RunRecord record;
+        record.instance = instanceIndex;
+        record.planner = p;
+        record.run = run;
         benchmark.setPostRunEvent(
-            [&](const ob::PlannerPtr &planner, ompl::tools::Benchmark::RunProperties &run)
+            [&](const ob::PlannerPtr &planner, ompl::tools::Benchmark::RunProperties &properties)
             {
                 // A run succeeds only with an exact solution that the independent validator accepts.
                 bool success = false;
@@ -190,11 +199,11 @@ namespace
                     try
                     {
                         const MultiRobotPlan plan = PlannerRegistry::planOf(*planner, si, false);
-                        const ValidationReport report = validator.validate(plan);
+                        const ValidationReport report = SolutionValidator(problem).validate(plan);
                         success = report.valid;
                         verdict = report.valid ? "valid" : report.message;
                         // Every planner's plan against the same bounds (our planners report them too).
-                        PlanQuality::measure(*si, plan).addProperties(run);
+                        PlanQuality::measure(*si, plan).addProperties(properties);
                     }
                     catch (const std::exception &e)
                     {
@@ -202,35 +211,105 @@ namespace
                     }
                     if (!success)
                     {
-                        ++invalid;
+                        record.invalid = true;
                         log << "ompl_parc_benchmark: *** INVALID SOLUTION *** planner '" << planner->getName()
-                            << "' run " << benchmark.getStatus().activeRun << " (seed " << seedOf() << "): " << verdict
-                            << std::endl;
+                            << "' run " << run << " (seed " << seed << "): " << verdict << std::endl;
                     }
                 }
-                run["success BOOLEAN"] = success ? "1" : "0";
-                run["validation STRING"] = verdict;
-                run["seed INTEGER"] = std::to_string(seedOf());
-                tally[planner->getName()].push_back(
-                    {success, std::stod(run["time REAL"]), success ? std::stod(run["makespan_ratio REAL"]) : 0.});
-
+                properties["success BOOLEAN"] = success ? "1" : "0";
+                properties["validation STRING"] = verdict;
+                properties["seed INTEGER"] = std::to_string(seed);
                 const auto status =
-                    ob::PlannerStatus(static_cast<ob::PlannerStatus::StatusType>(std::stoi(run["status ENUM"])));
-                csv.write(
-                    {instance.scenario, si->getRobotCount(), instance.task, seedOf(), workerBudget(*planner),
-                     planner->getName(), typeOf[planner->getName()], config.getTimeLimit(), success, status.asString()},
-                    run);
-                log << "[" << ++done << "/" << total << "] " << config.getProblemName() << " " << planner->getName()
-                    << " seed " << seedOf() << ": " << (success ? "solved" : status.asString()) << " in "
-                    << run["time REAL"] << " s" << std::endl;
+                    ob::PlannerStatus(static_cast<ob::PlannerStatus::StatusType>(std::stoi(properties["status ENUM"])));
+                log << "[" << counter << "] " << config.getProblemName() << " " << planner->getName() << " seed "
+                    << seed << ": " << (success ? "solved" : status.asString()) << " in " << properties["time REAL"]
+                    << " s" << std::endl;
             });
 
-        ompl::tools::Benchmark::Request request(config.getTimeLimit(), config.getMemLimit(), config.getRunCount());
+        ompl::tools::Benchmark::Request request(config.getTimeLimit(), config.getMemLimit(), 1);
         request.displayProgress = false;    // our progress line goes to stderr instead
         request.saveConsoleOutput = false;  // no console log file next to the results
         request.simplify = false;           // the planners' own solutions are what is compared
         request.timeBetweenUpdates = PROGRESS_PERIOD;
         benchmark.benchmark(request);
+
+        const auto &experiment = benchmark.getRecordedExperimentData();
+        const auto &recorded = experiment.planners.at(0);
+        record.plannerName = recorded.name;
+        record.properties = recorded.runs.at(0);
+        record.common = recorded.common;
+        record.progressNames = recorded.progressPropertyNames;
+        if (!recorded.runsProgressData.empty())
+            record.progress = recorded.runsProgressData.front();
+        record.host = experiment.host;
+        record.cpuInfo = experiment.cpuInfo;
+        record.setupInfo = experiment.setupInfo;
+        record.programSeed = experiment.seed;
+        record.started = std::chrono::duration<double>(experiment.startTime.time_since_epoch()).count();
+        record.duration = experiment.totalDuration;
+        return record;
+    }
+
+    /** \brief Writes the OMPL log of \e instance from its \e records (sorted by planner, then run: OMPL's own order)
+        to \e path, and their CSV rows; tallies them. */
+    void writeInstance(const BenchmarkConfig &config, const Instance &instance,
+                       const std::vector<const tools::RunRecord *> &records, const std::filesystem::path &path,
+                       tools::ResultsCsv &csv, Tally &tally)
+    {
+        const MultiRobotProblem &problem = instance.problem;
+        const auto &si = problem.getSpaceInformation();
+        const auto setup = setupFor(problem, instance.planners.front());
+        MergedBenchmark benchmark(*setup, config.getProblemName());
+        benchmark.addExperimentParameter("robots", "INTEGER", std::to_string(si->getRobotCount()));
+        benchmark.addExperimentParameter("resolution", "REAL", std::to_string(si->getResolution()));
+        benchmark.addExperimentParameter("base_seed", "INTEGER", std::to_string(config.getSeed()));
+        benchmark.addExperimentParameter("worker_budget", "INTEGER", std::to_string(config.getWorkers()));
+        benchmark.addExperimentParameter("task", "INTEGER", std::to_string(instance.task));
+        benchmark.addExperimentParameter("ompl_parc_version", "VARCHAR(32)", OMPL_PARC_VERSION);
+        auto &experiment = benchmark.experiment();
+        experiment.maxTime = config.getTimeLimit();
+        experiment.maxMem = config.getMemLimit();
+        experiment.runCount = config.getRunCount();
+        experiment.planners.resize(instance.planners.size());
+        double first = records.empty() ? 0. : records.front()->started, last = first;
+        for (const tools::RunRecord *r : records)
+        {
+            const auto &planner = instance.planners.at(r->planner);
+            auto &entry = experiment.planners.at(r->planner);
+            if (entry.runs.empty())
+            {
+                entry.name = r->plannerName;
+                entry.common = r->common;
+                entry.progressPropertyNames = r->progressNames;
+            }
+            entry.runs.push_back(r->properties);
+            if (!r->progressNames.empty())
+                entry.runsProgressData.push_back(r->progress);
+            first = std::min(first, r->started);
+            last = std::max(last, r->started + r->duration);
+
+            auto properties = r->properties;
+            const bool success = properties["success BOOLEAN"] == "1";
+            tally[planner->getName()].push_back({success, std::stod(properties["time REAL"]),
+                                                 success ? std::stod(properties["makespan_ratio REAL"]) : 0.});
+            const auto status =
+                ob::PlannerStatus(static_cast<ob::PlannerStatus::StatusType>(std::stoi(properties["status ENUM"])));
+            csv.write({instance.scenario, si->getRobotCount(), instance.task,
+                       static_cast<unsigned int>(std::stoul(properties["seed INTEGER"])), workerBudget(*planner),
+                       planner->getName(), config.getPlanners().at(r->planner).type, config.getTimeLimit(), success,
+                       status.asString()},
+                      properties);
+        }
+        if (!records.empty())
+        {
+            experiment.startTime = ompl::time::point(
+                std::chrono::duration_cast<ompl::time::point::duration>(std::chrono::duration<double>(first)));
+            experiment.totalDuration = last - first;
+            experiment.setupInfo = records.front()->setupInfo;
+            experiment.seed = static_cast<std::uint_fast32_t>(records.front()->programSeed);
+            experiment.host = records.front()->host;
+            experiment.cpuInfo = records.front()->cpuInfo;
+        }
         // The log's first line names OMPL's version from its OMPL_VERSION macro, which Debian's OMPL leaves empty:
         // the database would show none. The version CMake found goes there instead.
         std::stringstream saved;
@@ -239,8 +318,7 @@ namespace
         const std::string blank = "OMPL version \n";
         if (text.rfind(blank, 0) == 0)
             text.replace(0, blank.size(), std::string("OMPL version ") + OMPL_PARC_OMPL_VERSION + "\n");
-        openForWriting(logPath) << text;
-        return invalid;
+        openForWriting(path) << text;
     }
 }  // namespace
 
@@ -259,30 +337,71 @@ std::string ompl_parc::tools::BenchmarkRunner::describe() const
            std::to_string(instances_.front().planners.size()) + " planners, config ok";
 }
 
-ompl_parc::tools::BenchmarkResults ompl_parc::tools::BenchmarkRunner::run(std::ostream &log)
+std::size_t ompl_parc::tools::BenchmarkRunner::getRunCount() const
+{
+    return instances_.size() * config_.getPlanners().size() * config_.getRunCount();
+}
+
+std::vector<std::filesystem::path> ompl_parc::tools::BenchmarkRunner::checkOutput() const
 {
     const std::filesystem::path folder = config_.getOutput();
     std::error_code error;
     std::filesystem::create_directories(folder, error);
     if (error)
         throw std::invalid_argument("cannot create output folder '" + folder.string() + "': " + error.message());
-    BenchmarkResults results;
+    std::vector<std::filesystem::path> paths;
     for (const auto &instance : instances_)
+        paths.push_back(folder / (config_.getProblemName() +
+                                  (instances_.size() > 1 ? "_" + std::to_string(instance.task) : "") + ".log"));
+    paths.push_back(folder / (config_.getProblemName() + ".csv"));
+    for (const auto &path : paths)
+        openForWriting(path);  // fail now rather than after hours of runs
+    return paths;
+}
+
+std::vector<ompl_parc::tools::RunRecord> ompl_parc::tools::BenchmarkRunner::runShare(std::size_t rank,
+                                                                                     std::size_t ranks,
+                                                                                     std::ostream &log)
+{
+    const std::size_t planners = config_.getPlanners().size(), runs = config_.getRunCount();
+    const std::size_t share = getRunCount() / ranks + (rank < getRunCount() % ranks ? 1 : 0);
+    std::vector<RunRecord> records;
+    for (std::size_t k = rank; k < getRunCount(); k += ranks)
     {
-        results.logs.push_back(folder / (config_.getProblemName() +
-                                         (instances_.size() > 1 ? "_" + std::to_string(instance.task) : "") + ".log"));
-        openForWriting(results.logs.back());  // fail now rather than after hours of runs
+        const std::size_t instance = k / (planners * runs), planner = k / runs % planners, run = k % runs;
+        if (run == 0 && planner == 0 && ranks == 1)
+            log << "ompl_parc_benchmark: problem " << instance + 1 << "/" << instances_.size() << ": "
+                << instances_[instance].scenario << std::endl;
+        const std::string counter = std::to_string(records.size() + 1) + "/" + std::to_string(share) +
+                                    (ranks > 1 ? " on rank " + std::to_string(rank) : "");
+        records.push_back(runOnce(config_, instances_[instance], instance, planner, run, log, counter));
     }
-    results.csv = folder / (config_.getProblemName() + ".csv");
+    return records;
+}
+
+ompl_parc::tools::BenchmarkResults ompl_parc::tools::BenchmarkRunner::write(std::vector<RunRecord> records,
+                                                                            std::ostream &log) const
+{
+    const auto paths = checkOutput();
+    std::sort(records.begin(), records.end(),
+              [](const RunRecord &a, const RunRecord &b)
+              { return std::tie(a.instance, a.planner, a.run) < std::tie(b.instance, b.planner, b.run); });
+    BenchmarkResults results;
+    results.logs.assign(paths.begin(), paths.end() - 1);
+    results.csv = paths.back();
     std::ofstream csvFile = openForWriting(results.csv);
     ResultsCsv csv(csvFile);
-
     Tally tally;
     for (std::size_t k = 0; k < instances_.size(); ++k)
     {
-        log << "ompl_parc_benchmark: problem " << k + 1 << "/" << instances_.size() << ": " << instances_[k].scenario
-            << std::endl;
-        results.invalid += runInstance(config_, instances_[k], results.logs[k], csv, tally, log);
+        std::vector<const RunRecord *> mine;
+        for (const RunRecord &r : records)
+            if (r.instance == k)
+            {
+                mine.push_back(&r);
+                results.invalid += r.invalid ? 1 : 0;
+            }
+        writeInstance(config_, instances_[k], mine, results.logs[k], csv, tally);
     }
     log << "ompl_parc_benchmark: wrote " << results.csv.string() << " and " << instances_.size() << " log(s)"
         << (results.invalid ? ", " + std::to_string(results.invalid) + " INVALID solutions" : std::string())
@@ -291,4 +410,10 @@ ompl_parc::tools::BenchmarkResults ompl_parc::tools::BenchmarkRunner::run(std::o
     printSummary(config_, tally, summary);
     results.summary = summary.str();
     return results;
+}
+
+ompl_parc::tools::BenchmarkResults ompl_parc::tools::BenchmarkRunner::run(std::ostream &log)
+{
+    checkOutput();
+    return write(runShare(0, 1, log), log);
 }

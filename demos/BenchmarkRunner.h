@@ -1,6 +1,8 @@
 #ifndef OMPL_PARC_DEMOS_BENCHMARK_RUNNER_
 #define OMPL_PARC_DEMOS_BENCHMARK_RUNNER_
 
+#include "RunRecord.h"
+
 #include "ompl_parc/model/MultiRobotProblem.h"
 #include "ompl_parc/planners/setup/BenchmarkConfig.h"
 
@@ -34,8 +36,9 @@ namespace ompl_parc::tools
         std::vector<ompl::base::PlannerPtr> planners;
     };
 
-    /** \brief Runs a benchmark configuration (BenchmarkConfig) with OMPL's own ompl::tools::Benchmark: run j of
-        every planner seeded with [benchmark] seed + j, every solution re-checked by the independent
+    /** \brief Runs a benchmark configuration (BenchmarkConfig) with OMPL's own ompl::tools::Benchmark, one run at a
+        time (so that the runs can be shared among processes, runShare(), and merged, write()): run j of every planner
+        seeded with [benchmark] seed + j, every solution re-checked by the independent
         SolutionValidator. Writes <output>/<name>.log (OMPL's log format, for ompl_benchmark_statistics; with
         [problem] instances = N one per task, <name>_<task>.log) and <output>/<name>.csv. The tool and the Python
         module run benchmarks through it. */
@@ -51,8 +54,22 @@ namespace ompl_parc::tools
         std::string describe() const;
 
         /** \brief Runs everything, one line per run on \e log; throws std::invalid_argument if the output cannot
-            be written (checked before the first run). */
+            be written (checked before the first run). Is write(runShare(0, 1, log), log). */
         BenchmarkResults run(std::ostream &log);
+
+        /** \brief The number of runs in all: problems x planners x run_count. */
+        std::size_t getRunCount() const;
+        /** \brief Creates the output folder and checks that the logs and the CSV can be written there (returns their
+            paths, the CSV last); throws std::invalid_argument otherwise. */
+        std::vector<std::filesystem::path> checkOutput() const;
+        /** \brief Runs share \e rank of \e ranks: the runs k = rank, rank + ranks, ... of all runs in OMPL's order
+            (problem, then planner, then run index), one line each on \e log. Run j of a planner is seeded with
+            [benchmark] seed + j in any share, so a run gives the same result wherever it runs (planners without a
+            seed parameter draw from OMPL's global sequence, which depends on what ran before). */
+        std::vector<RunRecord> runShare(std::size_t rank, std::size_t ranks, std::ostream &log);
+        /** \brief Writes \e records (every share's, in any order) as one experiment: the OMPL logs and the CSV in
+            OMPL's order, the summary; as if one process had run them all. */
+        BenchmarkResults write(std::vector<RunRecord> records, std::ostream &log) const;
 
       private:
         BenchmarkConfig config_;

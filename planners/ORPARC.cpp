@@ -69,7 +69,7 @@ void ompl_parc::ORPARC::setProblemDefinition(const ob::ProblemDefinitionPtr &pde
     resultSmoothing_.reset();
 }
 
-void ompl_parc::ORPARC::createRacers(unsigned int seed)
+std::shared_ptr<ompl_parc::PARC> ompl_parc::ORPARC::makeRacer(std::uint_fast32_t seed)
 {
     // The profile first: it sets the fields no other parameter was set for (ArcSettings::explicitFields),
     // and the prototype's values of all other parameters then make each racer equal to the prototype.
@@ -77,18 +77,32 @@ void ompl_parc::ORPARC::createRacers(unsigned int seed)
     prototype_->params().getParams(values);
     const std::string profile = values.at("profile");
     values.erase("profile");
-    race_.createRacers(
-        [&](unsigned int, std::uint_fast32_t seed)
-        {
-            auto racer = std::make_shared<PARC>(si_);
-            racer->params().setParam("profile", profile);
-            racer->params().setParams(values, true);
-            racer->setSeed(seed);
-            racer->setSmoothing(0.);
-            racer->reportProgressInto(progress_);
-            return racer;
-        },
-        seed, pdef_);
+    auto racer = std::make_shared<PARC>(si_);
+    racer->params().setParam("profile", profile);
+    racer->params().setParams(values, true);
+    racer->setSeed(static_cast<unsigned int>(seed));
+    racer->setSmoothing(0.);
+    racer->reportProgressInto(progress_);
+    return racer;
+}
+
+void ompl_parc::ORPARC::createRacers(unsigned int seed)
+{
+    race_.createRacers([this](unsigned int, std::uint_fast32_t mixed) { return makeRacer(mixed); }, seed, pdef_);
+}
+
+std::shared_ptr<ompl_parc::PARC> ompl_parc::ORPARC::createInstance(unsigned int k, std::uint_fast32_t raceSeed)
+{
+    checkValidity();
+    auto racer = makeRacer(mixSeed(raceSeed, k));
+    racer->setName(getName() + "#" + std::to_string(k));
+    racer->setProblemDefinition(pdef_);
+    return racer;
+}
+
+std::uint_fast32_t ompl_parc::ORPARC::smoothingSeed(std::uint_fast32_t instanceSeed)
+{
+    return mixSeed(instanceSeed, 0x5300);
 }
 
 ob::PlannerStatus ompl_parc::ORPARC::solve(const ob::PlannerTerminationCondition &ptc)
@@ -165,7 +179,7 @@ void ompl_parc::ORPARC::takeWinner(const ob::PlannerTerminationCondition &ptc)
         progress_.reachStage(ArcProgress::Stage::SMOOTHING);
     MultiRobotPlan plan = winner.getPlan();
     smoothing_.setBudget(prototype_->getSmoothing());
-    smoothing_.apply(mrsi, plan, ptc, mixSeed(winner.getSeed(), 0x5300));
+    smoothing_.apply(mrsi, plan, ptc, smoothingSeed(winner.getSeed()));
     if (result_ && objectiveOf(plan) >= objectiveOf(*result_))
         return;
     result_ = std::move(plan);

@@ -93,9 +93,18 @@ namespace ompl_parc
         void setSeed(unsigned int seed) { prototype_->setSeed(seed); }
         unsigned int getSeed() const { return prototype_->getSeed(); }
 
+        /** \brief Instance \e k of a race seeded with \e raceSeed (not 0: seedOrDraw() draws it), set up exactly as
+            this planner's racer k (the prototype's values, seed mixSeed(raceSeed, k), no smoothing), on this planner's
+            problem: for racing the instances somewhere else, e.g. one per MPI rank (ompl_parc_mpi). */
+        std::shared_ptr<PARC> createInstance(unsigned int k, std::uint_fast32_t raceSeed);
+        /** \brief The seed with which the winner of a race, instance seed \e instanceSeed, is smoothed. */
+        static std::uint_fast32_t smoothingSeed(std::uint_fast32_t instanceSeed);
+
       private:
         /** \brief The K racers, seeded from \e seed (as OrRace::createRacers()). */
         void createRacers(unsigned int seed);
+        /** \brief A racer like the prototype, with the instance seed \e seed. */
+        std::shared_ptr<PARC> makeRacer(std::uint_fast32_t seed);
         /** \brief After a won race: smooth a copy of the winner's plan; keep it (and report it) if it is the first or
             better than the best so far by the objective. */
         void takeWinner(const ompl::base::PlannerTerminationCondition &ptc);

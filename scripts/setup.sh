@@ -11,6 +11,7 @@ PACKAGES=(
     nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
     ompl-demos python3 python3-matplotlib doxygen
     pybind11-dev python3-dev python3-numpy python3-pytest
+    libopenmpi-dev openmpi-bin
     clang libclang-rt-dev
 )
 

@@ -38,6 +38,11 @@ done
 [ -f "$share/robots/panda.urdf" ] || { echo "no panda.urdf in share/"; exit 1; }
 "$bin/ompl_parc_benchmark" --check "$share/benchmarks/quick/mobile_cross_8.cfg" >/dev/null ||
     { echo "a shipped benchmark suite does not check"; exit 1; }
+# ompl_parc_mpi (when MPI was found), as a single rank without mpirun (MPI's singleton start).
+if [ -x "$bin/ompl_parc_mpi" ]; then
+    "$bin/ompl_parc_mpi" --scenario-file "$share/scenarios/doorway_swap.json" --param seed=1 | grep -q '^validated  yes' ||
+        { echo "the installed ompl_parc_mpi did not solve the shipped doorway_swap.json"; exit 1; }
+fi
 # The Python module, installed into the interpreter's package folder under the prefix (when it was built).
 for module in "$tmp"/prefix/lib/python3*/*-packages/ompl_parc; do
     [ -d "$module" ] || continue
