@@ -211,8 +211,12 @@ namespace
         for (std::size_t r = 0; r < claims.size(); ++r)
         {
             const auto &c = claims[r];
-            std::cout << "rank " << std::left << std::setw(6) << r << std::right << c.reason << ", returned after "
-                      << c.returnedAfter << " s";
+            // A planner stopped because another rank won reports a timeout: say what happened instead.
+            const bool stopped = race.getWinner() >= 0 && static_cast<int>(r) != race.getWinner() &&
+                                 c.status == ob::PlannerStatus::TIMEOUT;
+            std::cout << "rank " << std::left << std::setw(6) << r << std::right
+                      << (stopped ? "stopped: rank " + std::to_string(race.getWinner()) + " won" : c.reason)
+                      << ", returned after " << c.returnedAfter << " s";
             const json report = json::parse(c.report);
             if (report.contains("name"))
                 std::cout << ", " << report["name"].get<std::string>() << " seed " << report["seed"]

@@ -15,7 +15,7 @@ import statistics
 import subprocess
 import time
 
-PROBLEMS = [("mobile_cross", 32, 0), ("panda_cage", 8, 0), ("field", 24, 1)]
+PROBLEMS = [("mobile_cross", 32, 0), ("mobile_cross", 128, 0), ("panda_cage", 8, 0), ("panda_cage", 16, 0), ("field", 24, 1)]
 
 
 def timed(command):
