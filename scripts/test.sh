@@ -15,8 +15,9 @@ if [ "${OMPL_PARC_SKIP_SANITIZERS:-0}" != "1" ]; then
         -DOMPL_PARC_BUILD_BENCHMARKS=OFF
     ctest --test-dir build-asan --output-on-failure -j"$(nproc)"
     echo "== sanitizer pass: TSan on the parallel planners and runtime =="
+    # Only the test binary: the tests run under TSan are all in it (the tools are not run here).
     bash scripts/build.sh build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOMPL_PARC_SANITIZE=thread \
-        -DOMPL_PARC_BUILD_BENCHMARKS=OFF
+        -DOMPL_PARC_BUILD_BENCHMARKS=OFF -- --target ompl_parc_tests
     TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$PWD/tests/tsan.supp" ctest --test-dir build-tsan --output-on-failure \
         -j"$(nproc)" -R 'Parc|BatchDetection|WorkerPool|OrTaskRunner|SolutionValidator|ConflictDetector.Concurrent|InnerPlannerLog'
     echo "== fuzzing the file parsers: libFuzzer, 200 000 inputs from a fixed seed (build-fuzz/) =="
