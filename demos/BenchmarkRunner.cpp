@@ -103,9 +103,6 @@ namespace
                 throw std::invalid_argument(
                     "planner '" + entry.name + "' needs " + std::to_string(budget) +
                     " workers but [benchmark] workers = " + std::to_string(config.getWorkers()));
-            if (!planner->params().hasParam("seed") && task == config.getTask())
-                std::cerr << "ompl_parc_benchmark: planner '" << entry.name
-                          << "' has no seed parameter: its runs use OMPL's global random sequence\n";
             instance.planners.push_back(planner);
         }
         return instance;
@@ -146,7 +143,8 @@ namespace
     {
       public:
         using ompl::tools::Benchmark::Benchmark;
-        CompleteExperiment &experiment() { return exp_; }
+        /** \brief The experiment the log is written from. */
+        CompleteExperiment &getExperiment() { return exp_; }
     };
 
     /** \brief A SimpleSetup for \e problem's start and goal with \e planner (else SimpleSetup allocates a default
@@ -250,11 +248,28 @@ namespace
         return record;
     }
 
-    /** \brief Writes the OMPL log of \e instance from its \e records (sorted by planner, then run: OMPL's own order)
-        to \e path, and their CSV rows; tallies them. */
-    void writeInstance(const BenchmarkConfig &config, const Instance &instance,
-                       const std::vector<const tools::RunRecord *> &records, const std::filesystem::path &path,
-                       tools::ResultsCsv &csv, Tally &tally)
+    /** \brief The CSV row of \e record, a run of \e instance; tallied. */
+    void writeRow(const BenchmarkConfig &config, const Instance &instance, const tools::RunRecord &record,
+                  tools::ResultsCsv &csv, Tally &tally)
+    {
+        const auto &planner = instance.planners.at(record.planner);
+        auto properties = record.properties;
+        const bool success = properties["success BOOLEAN"] == "1";
+        tally[planner->getName()].push_back(
+            {success, std::stod(properties["time REAL"]), success ? std::stod(properties["makespan_ratio REAL"]) : 0.});
+        const auto status =
+            ob::PlannerStatus(static_cast<ob::PlannerStatus::StatusType>(std::stoi(properties["status ENUM"])));
+        csv.write({instance.scenario, instance.problem.getSpaceInformation()->getRobotCount(), instance.task,
+                   static_cast<unsigned int>(std::stoul(properties["seed INTEGER"])), workerBudget(*planner),
+                   planner->getName(), config.getPlanners().at(record.planner).type, config.getTimeLimit(), success,
+                   status.asString()},
+                  properties);
+    }
+
+    /** \brief Writes the OMPL log of \e instance from its \e records (every run of it, sorted by planner, then run:
+        OMPL's own order) to \e path. */
+    void writeLog(const BenchmarkConfig &config, const Instance &instance, const std::vector<tools::RunRecord> &records,
+                  const std::filesystem::path &path)
     {
         const MultiRobotProblem &problem = instance.problem;
         const auto &si = problem.getSpaceInformation();
@@ -266,50 +281,34 @@ namespace
         benchmark.addExperimentParameter("worker_budget", "INTEGER", std::to_string(config.getWorkers()));
         benchmark.addExperimentParameter("task", "INTEGER", std::to_string(instance.task));
         benchmark.addExperimentParameter("ompl_parc_version", "VARCHAR(32)", OMPL_PARC_VERSION);
-        auto &experiment = benchmark.experiment();
+        auto &experiment = benchmark.getExperiment();
         experiment.maxTime = config.getTimeLimit();
         experiment.maxMem = config.getMemLimit();
         experiment.runCount = config.getRunCount();
         experiment.planners.resize(instance.planners.size());
-        double first = records.empty() ? 0. : records.front()->started, last = first;
-        for (const tools::RunRecord *r : records)
+        double first = records.front().started, last = first;
+        for (const tools::RunRecord &r : records)
         {
-            const auto &planner = instance.planners.at(r->planner);
-            auto &entry = experiment.planners.at(r->planner);
+            auto &entry = experiment.planners.at(r.planner);
             if (entry.runs.empty())
             {
-                entry.name = r->plannerName;
-                entry.common = r->common;
-                entry.progressPropertyNames = r->progressNames;
+                entry.name = r.plannerName;
+                entry.common = r.common;
+                entry.progressPropertyNames = r.progressNames;
             }
-            entry.runs.push_back(r->properties);
-            if (!r->progressNames.empty())
-                entry.runsProgressData.push_back(r->progress);
-            first = std::min(first, r->started);
-            last = std::max(last, r->started + r->duration);
-
-            auto properties = r->properties;
-            const bool success = properties["success BOOLEAN"] == "1";
-            tally[planner->getName()].push_back({success, std::stod(properties["time REAL"]),
-                                                 success ? std::stod(properties["makespan_ratio REAL"]) : 0.});
-            const auto status =
-                ob::PlannerStatus(static_cast<ob::PlannerStatus::StatusType>(std::stoi(properties["status ENUM"])));
-            csv.write({instance.scenario, si->getRobotCount(), instance.task,
-                       static_cast<unsigned int>(std::stoul(properties["seed INTEGER"])), workerBudget(*planner),
-                       planner->getName(), config.getPlanners().at(r->planner).type, config.getTimeLimit(), success,
-                       status.asString()},
-                      properties);
+            entry.runs.push_back(r.properties);
+            if (!r.progressNames.empty())
+                entry.runsProgressData.push_back(r.progress);
+            first = std::min(first, r.started);
+            last = std::max(last, r.started + r.duration);
         }
-        if (!records.empty())
-        {
-            experiment.startTime = ompl::time::point(
-                std::chrono::duration_cast<ompl::time::point::duration>(std::chrono::duration<double>(first)));
-            experiment.totalDuration = last - first;
-            experiment.setupInfo = records.front()->setupInfo;
-            experiment.seed = static_cast<std::uint_fast32_t>(records.front()->programSeed);
-            experiment.host = records.front()->host;
-            experiment.cpuInfo = records.front()->cpuInfo;
-        }
+        experiment.startTime = ompl::time::point(
+            std::chrono::duration_cast<ompl::time::point::duration>(std::chrono::duration<double>(first)));
+        experiment.totalDuration = last - first;
+        experiment.setupInfo = records.front().setupInfo;
+        experiment.seed = static_cast<std::uint_fast32_t>(records.front().programSeed);
+        experiment.host = records.front().host;
+        experiment.cpuInfo = records.front().cpuInfo;
         // The log's first line names OMPL's version from its OMPL_VERSION macro, which Debian's OMPL leaves empty:
         // the database would show none. The version CMake found goes there instead.
         std::stringstream saved;
@@ -320,12 +319,71 @@ namespace
             text.replace(0, blank.size(), std::string("OMPL version ") + OMPL_PARC_OMPL_VERSION + "\n");
         openForWriting(path) << text;
     }
+
+    /** \brief Writes a benchmark's results as its runs come in: each run's CSV row at once (flushed: an interrupted
+        benchmark keeps the rows of the runs it did), each problem's OMPL log when its last run is in; then the
+        summary. The rows follow the order the runs come in (OMPL's, from one process or sorted after a sweep). */
+    class ResultsWriter
+    {
+      public:
+        /** \brief Opens the CSV at the last of \e paths (the logs before it, one per problem). */
+        ResultsWriter(const BenchmarkConfig &config, const std::vector<Instance> &instances,
+                      const std::vector<std::filesystem::path> &paths)
+            : config_(config), instances_(instances), csvFile_(openForWriting(paths.back())), csv_(csvFile_)
+        {
+            results_.logs.assign(paths.begin(), paths.end() - 1);
+            results_.csv = paths.back();
+            pending_.resize(instances.size());
+        }
+
+        /** \brief Takes one run's record. */
+        void add(tools::RunRecord record)
+        {
+            const Instance &instance = instances_.at(record.instance);
+            writeRow(config_, instance, record, csv_, tally_);
+            results_.invalid += record.invalid ? 1 : 0;
+            auto &runs = pending_[record.instance];
+            runs.push_back(std::move(record));
+            if (runs.size() < instance.planners.size() * config_.getRunCount())
+                return;
+            std::sort(runs.begin(), runs.end(),
+                      [](const tools::RunRecord &a, const tools::RunRecord &b)
+                      { return std::tie(a.planner, a.run) < std::tie(b.planner, b.run); });
+            writeLog(config_, instance, runs, results_.logs.at(&instance - instances_.data()));
+            runs.clear();
+        }
+
+        /** \brief The results, with the summary table; a line on \e log. */
+        tools::BenchmarkResults finish(std::ostream &log)
+        {
+            log << "ompl_parc_benchmark: wrote " << results_.csv.string() << " and " << instances_.size() << " log(s)"
+                << (results_.invalid ? ", " + std::to_string(results_.invalid) + " INVALID solutions" : std::string())
+                << std::endl;
+            std::ostringstream summary;
+            printSummary(config_, tally_, summary);
+            results_.summary = summary.str();
+            return results_;
+        }
+
+      private:
+        const BenchmarkConfig &config_;
+        const std::vector<Instance> &instances_;
+        tools::BenchmarkResults results_;
+        std::ofstream csvFile_;
+        tools::ResultsCsv csv_;
+        Tally tally_;
+        /** \brief Per problem, its runs in so far (until its log is written). */
+        std::vector<std::vector<tools::RunRecord>> pending_;
+    };
 }  // namespace
 
 ompl_parc::tools::BenchmarkRunner::BenchmarkRunner(BenchmarkConfig config) : config_(std::move(config))
 {
     for (std::size_t k = 0; k < config_.getInstances(); ++k)
         instances_.push_back(makeInstance(config_, config_.getTask() + k));
+    for (const auto &planner : instances_.front().planners)
+        if (!planner->params().hasParam("seed"))
+            seedless_.push_back(planner->getName());
 }
 
 ompl_parc::tools::BenchmarkRunner::~BenchmarkRunner() = default;
@@ -359,61 +417,56 @@ std::vector<std::filesystem::path> ompl_parc::tools::BenchmarkRunner::checkOutpu
     return paths;
 }
 
+void ompl_parc::tools::BenchmarkRunner::runRuns(std::size_t rank, std::size_t ranks, std::ostream &log,
+                                                const std::function<void(RunRecord)> &take)
+{
+    if (rank == 0)
+        for (const std::string &name : seedless_)
+            log << "ompl_parc_benchmark: planner '" << name
+                << "' has no seed parameter: its runs use OMPL's global random sequence" << std::endl;
+    const std::size_t planners = config_.getPlanners().size(), runs = config_.getRunCount();
+    const std::size_t share = getRunCount() / ranks + (rank < getRunCount() % ranks ? 1 : 0);
+    std::size_t done = 0;
+    for (std::size_t k = rank; k < getRunCount(); k += ranks)
+    {
+        const std::size_t instance = k / (planners * runs), planner = k / runs % planners, run = k % runs;
+        // One process counts per problem, as it goes through them; a rank counts its share.
+        std::string counter = std::to_string(++done) + "/" + std::to_string(share) + " on rank " + std::to_string(rank);
+        if (ranks == 1)
+        {
+            if (k % (planners * runs) == 0)
+                log << "ompl_parc_benchmark: problem " << instance + 1 << "/" << instances_.size() << ": "
+                    << instances_[instance].scenario << std::endl;
+            counter = std::to_string(k % (planners * runs) + 1) + "/" + std::to_string(planners * runs);
+        }
+        take(runOnce(config_, instances_[instance], instance, planner, run, log, counter));
+    }
+}
+
 std::vector<ompl_parc::tools::RunRecord> ompl_parc::tools::BenchmarkRunner::runShare(std::size_t rank,
                                                                                      std::size_t ranks,
                                                                                      std::ostream &log)
 {
-    const std::size_t planners = config_.getPlanners().size(), runs = config_.getRunCount();
-    const std::size_t share = getRunCount() / ranks + (rank < getRunCount() % ranks ? 1 : 0);
     std::vector<RunRecord> records;
-    for (std::size_t k = rank; k < getRunCount(); k += ranks)
-    {
-        const std::size_t instance = k / (planners * runs), planner = k / runs % planners, run = k % runs;
-        if (run == 0 && planner == 0 && ranks == 1)
-            log << "ompl_parc_benchmark: problem " << instance + 1 << "/" << instances_.size() << ": "
-                << instances_[instance].scenario << std::endl;
-        const std::string counter = std::to_string(records.size() + 1) + "/" + std::to_string(share) +
-                                    (ranks > 1 ? " on rank " + std::to_string(rank) : "");
-        records.push_back(runOnce(config_, instances_[instance], instance, planner, run, log, counter));
-    }
+    runRuns(rank, ranks, log, [&records](RunRecord record) { records.push_back(std::move(record)); });
     return records;
 }
 
 ompl_parc::tools::BenchmarkResults ompl_parc::tools::BenchmarkRunner::write(std::vector<RunRecord> records,
                                                                             std::ostream &log) const
 {
-    const auto paths = checkOutput();
     std::sort(records.begin(), records.end(),
               [](const RunRecord &a, const RunRecord &b)
               { return std::tie(a.instance, a.planner, a.run) < std::tie(b.instance, b.planner, b.run); });
-    BenchmarkResults results;
-    results.logs.assign(paths.begin(), paths.end() - 1);
-    results.csv = paths.back();
-    std::ofstream csvFile = openForWriting(results.csv);
-    ResultsCsv csv(csvFile);
-    Tally tally;
-    for (std::size_t k = 0; k < instances_.size(); ++k)
-    {
-        std::vector<const RunRecord *> mine;
-        for (const RunRecord &r : records)
-            if (r.instance == k)
-            {
-                mine.push_back(&r);
-                results.invalid += r.invalid ? 1 : 0;
-            }
-        writeInstance(config_, instances_[k], mine, results.logs[k], csv, tally);
-    }
-    log << "ompl_parc_benchmark: wrote " << results.csv.string() << " and " << instances_.size() << " log(s)"
-        << (results.invalid ? ", " + std::to_string(results.invalid) + " INVALID solutions" : std::string())
-        << std::endl;
-    std::ostringstream summary;
-    printSummary(config_, tally, summary);
-    results.summary = summary.str();
-    return results;
+    ResultsWriter writer(config_, instances_, checkOutput());
+    for (RunRecord &record : records)
+        writer.add(std::move(record));
+    return writer.finish(log);
 }
 
 ompl_parc::tools::BenchmarkResults ompl_parc::tools::BenchmarkRunner::run(std::ostream &log)
 {
-    checkOutput();
-    return write(runShare(0, 1, log), log);
+    ResultsWriter writer(config_, instances_, checkOutput());
+    runRuns(0, 1, log, [&writer](RunRecord record) { writer.add(std::move(record)); });
+    return writer.finish(log);
 }

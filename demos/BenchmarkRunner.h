@@ -9,6 +9,7 @@
 #include <ompl/base/Planner.h>
 
 #include <filesystem>
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -53,8 +54,9 @@ namespace ompl_parc::tools
         /** \brief "NAME: K problem(s) of N robots, P planners, config ok". */
         std::string describe() const;
 
-        /** \brief Runs everything, one line per run on \e log; throws std::invalid_argument if the output cannot
-            be written (checked before the first run). Is write(runShare(0, 1, log), log). */
+        /** \brief Runs everything, one line per run on \e log, each run's CSV row written as it ends; throws
+            std::invalid_argument if the output cannot be written (checked before the first run). Writes what
+            write(runShare(0, 1, log), log) would. */
         BenchmarkResults run(std::ostream &log);
 
         /** \brief The number of runs in all: problems x planners x run_count. */
@@ -72,8 +74,14 @@ namespace ompl_parc::tools
         BenchmarkResults write(std::vector<RunRecord> records, std::ostream &log) const;
 
       private:
+        /** \brief Runs share \e rank of \e ranks (see runShare()), handing each run's record to \e take as it ends. */
+        void runRuns(std::size_t rank, std::size_t ranks, std::ostream &log,
+                     const std::function<void(RunRecord)> &take);
+
         BenchmarkConfig config_;
         std::vector<Instance> instances_;
+        /** \brief The planners without a seed parameter (warned about on rank 0's log). */
+        std::vector<std::string> seedless_;
     };
 }  // namespace ompl_parc::tools
 

@@ -31,6 +31,7 @@ namespace ompl_parc::tools
         /** \brief When the run started (seconds since the epoch) and how long it took with its validation. */
         double started{0.}, duration{0.};
 
+        /** \brief One line of JSON (no line break inside). */
         std::string toJson() const;
         /** \brief Throws std::invalid_argument on text that toJson() did not write. */
         static RunRecord fromJson(const std::string &text);

@@ -13,14 +13,18 @@
 
 namespace po = boost::program_options;
 
+void ompl_parc::tools::checkProblemSource(const po::variables_map &vm)
+{
+    if (vm.count("scenario-file") &&
+        (!vm["scenario"].defaulted() || !vm["robots"].defaulted() || !vm["task"].defaulted()))
+        throw std::invalid_argument("give --scenario-file or --scenario/--robots/--task, not both");
+}
+
 ompl_parc::MultiRobotProblem ompl_parc::tools::problemFromOptions(const po::variables_map &vm)
 {
+    checkProblemSource(vm);
     if (vm.count("scenario-file"))
-    {
-        if (!vm["scenario"].defaulted() || !vm["robots"].defaulted() || !vm["task"].defaulted())
-            throw std::invalid_argument("give --scenario-file or --scenario/--robots/--task, not both");
         return ScenarioFile::read(vm["scenario-file"].as<std::string>());  // checks the endpoints itself
-    }
     MultiRobotProblem problem = scenarios::createScenario(
         vm["scenario"].as<std::string>(), parseInteger(vm["robots"].as<std::string>(), "--robots", 1, MAX_ROBOTS), 128.,
         parseInteger(vm["task"].as<std::string>(), "--task", 0, MAX_TASK));

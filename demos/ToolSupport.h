@@ -21,6 +21,9 @@ namespace ompl_parc::tools
     /** \brief Adds --scenario, --robots, --task and --scenario-file to \e options. */
     void addProblemOptions(boost::program_options::options_description &options);
 
+    /** \brief Throws std::invalid_argument if both --scenario-file and one of --scenario/--robots/--task are given. */
+    void checkProblemSource(const boost::program_options::variables_map &vm);
+
     /** \brief Builds the problem named by --scenario/--robots/--task, or read from --scenario-file, and checks
         its starts and goals; throws (std::invalid_argument, ompl::Exception) with a one-line reason on
         bad input. */

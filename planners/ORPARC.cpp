@@ -93,16 +93,21 @@ void ompl_parc::ORPARC::createRacers(unsigned int seed)
 
 std::shared_ptr<ompl_parc::PARC> ompl_parc::ORPARC::createInstance(unsigned int k, std::uint_fast32_t raceSeed)
 {
-    checkValidity();
+    if (!pdef_)
+        throw ompl::Exception(getName(), "createInstance() needs the problem definition set first");
     auto racer = makeRacer(mixSeed(raceSeed, k));
     racer->setName(getName() + "#" + std::to_string(k));
     racer->setProblemDefinition(pdef_);
     return racer;
 }
 
-std::uint_fast32_t ompl_parc::ORPARC::smoothingSeed(std::uint_fast32_t instanceSeed)
+std::optional<ompl_parc::SmoothingReport> ompl_parc::ORPARC::smoothWinner(MultiRobotPlan &plan,
+                                                                          std::uint_fast32_t instanceSeed,
+                                                                          const ob::PlannerTerminationCondition &ptc)
 {
-    return mixSeed(instanceSeed, 0x5300);
+    smoothing_.setBudget(prototype_->getSmoothing());
+    smoothing_.apply(MultiRobotSpaceInformation::get(si_, getName()), plan, ptc, mixSeed(instanceSeed, 0x5300));
+    return smoothing_.getReport();
 }
 
 ob::PlannerStatus ompl_parc::ORPARC::solve(const ob::PlannerTerminationCondition &ptc)
@@ -178,12 +183,11 @@ void ompl_parc::ORPARC::takeWinner(const ob::PlannerTerminationCondition &ptc)
     if (objective_ == "first")
         progress_.reachStage(ArcProgress::Stage::SMOOTHING);
     MultiRobotPlan plan = winner.getPlan();
-    smoothing_.setBudget(prototype_->getSmoothing());
-    smoothing_.apply(mrsi, plan, ptc, smoothingSeed(winner.getSeed()));
+    std::optional<SmoothingReport> report = smoothWinner(plan, winner.getSeed(), ptc);
     if (result_ && objectiveOf(plan) >= objectiveOf(*result_))
         return;
     result_ = std::move(plan);
-    resultSmoothing_ = smoothing_.getReport();
+    resultSmoothing_ = std::move(report);
     ++improvements_;
     const auto path = result_->toPathGeometric(mrsi);
     if (objective_ == "first")

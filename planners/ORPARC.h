@@ -95,10 +95,13 @@ namespace ompl_parc
 
         /** \brief Instance \e k of a race seeded with \e raceSeed (not 0: seedOrDraw() draws it), set up exactly as
             this planner's racer k (the prototype's values, seed mixSeed(raceSeed, k), no smoothing), on this planner's
-            problem: for racing the instances somewhere else, e.g. one per MPI rank (ompl_parc_mpi). */
+            problem (set before): for racing the instances somewhere else, e.g. one per MPI rank (ompl_parc_mpi). */
         std::shared_ptr<PARC> createInstance(unsigned int k, std::uint_fast32_t raceSeed);
-        /** \brief The seed with which the winner of a race, instance seed \e instanceSeed, is smoothed. */
-        static std::uint_fast32_t smoothingSeed(std::uint_fast32_t instanceSeed);
+        /** \brief Smooths \e plan, the winning plan of the instance seeded \e instanceSeed, as this planner smooths its
+            winner's (the prototype's \e smooth budget, a seed derived from the instance's), under \e ptc; returns the
+            report (none without a budget). */
+        std::optional<SmoothingReport> smoothWinner(MultiRobotPlan &plan, std::uint_fast32_t instanceSeed,
+                                                    const ompl::base::PlannerTerminationCondition &ptc);
 
       private:
         /** \brief The K racers, seeded from \e seed (as OrRace::createRacers()). */

@@ -11,7 +11,8 @@
   sh       every command runs from a scratch folder laid out like the repository (build/bin is the tested
            build's), except: cmake/ctest builds and scripts/{setup,build,demo,test}.sh -- the set-up and test
            commands CI itself runs from this README -- which must exist, and Google Benchmark targets, listed
-           with --benchmark_list_tests (a full run takes minutes)
+           with --benchmark_list_tests (a full run takes minutes), and mpirun commands where ompl_parc_mpi was not
+           built (sanitizer trees)
   python   run from a scratch folder by the Python the module was built for, the module on its path
   text     output samples and layouts; a synopsis line starting with a tool names only options its --help has
 Usage: readme_test.py SOURCE_DIR BIN_DIR BENCHMARKS_BUILT [PYTHON PYTHONPATH]
@@ -30,7 +31,11 @@ src, bindir = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
 benchmarks_built = sys.argv[3] == "1"
 python, pythonpath = (sys.argv[4], os.path.abspath(sys.argv[5])) if len(sys.argv) > 5 else (None, None)
 readme = open(os.path.join(src, "README.md")).read()
-if os.geteuid() == 0:  # the README's mpirun commands, where the tests run as root (CI): Open MPI refuses root otherwise
+# The README's mpirun commands: run where ompl_parc_mpi was built (not in sanitizer trees), on any core count, and as
+# root where the tests run as root (CI), which Open MPI refuses otherwise.
+mpi_built = os.path.exists(os.path.join(bindir, "ompl_parc_mpi"))
+os.environ["OMPI_MCA_rmaps_base_oversubscribe"] = "1"
+if os.geteuid() == 0:
     os.environ.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 failures = []
 counts = {}
@@ -146,6 +151,8 @@ for b in blocks:
             if program in ("cmake", "ctest") or program in SKIPPED_SCRIPTS:
                 if program in SKIPPED_SCRIPTS and not os.access(os.path.join(src, program), os.X_OK):
                     fail(b, f"{program} is not an executable script")
+                continue
+            if program == "mpirun" and not mpi_built:
                 continue
             if program.startswith("build/bin/ompl_parc_bench_"):
                 if not benchmarks_built:

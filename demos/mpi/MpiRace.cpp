@@ -47,6 +47,11 @@ void ompl_parc::tools::MpiRace::run(const Solve &solve, const Describe &describe
                 status = ob::PlannerStatus::CRASH;
                 reason = e.what();
             }
+            catch (...)
+            {
+                status = ob::PlannerStatus::CRASH;
+                reason = "an exception that is not a std::exception";
+            }
             returnedAfter = getElapsed();
             returned = true;
         });
@@ -84,7 +89,7 @@ void ompl_parc::tools::MpiRace::run(const Solve &solve, const Describe &describe
 void ompl_parc::tools::MpiRace::referee(const std::function<bool()> &solved, const std::function<std::string()> &claim,
                                         const std::function<void()> &stop)
 {
-    claims_.assign(static_cast<std::size_t>(session_.size()), Claim{});
+    claims_.assign(static_cast<std::size_t>(session_.getSize()), Claim{});
     std::vector<bool> claimed(claims_.size(), false);
     std::size_t count = 0;
     bool decided = false;
@@ -122,7 +127,7 @@ void ompl_parc::tools::MpiRace::referee(const std::function<bool()> &solved, con
     }
     std::vector<MpiSession::PendingSend> ends(claims_.size());
     const std::string end = json{{"winner", winner_}, {"failed", failed_}}.dump();
-    for (int r = 1; r < session_.size(); ++r)
+    for (int r = 1; r < session_.getSize(); ++r)
         ends[r].start(end, r, TAG_END);
     stop();
     if (!claimed[0])

@@ -37,7 +37,9 @@ namespace ompl_parc::tools
             std::string report;
         };
 
+        /** \brief A rank's solve under the race's termination condition. */
         using Solve = std::function<ompl::base::PlannerStatus(const ompl::base::PlannerTerminationCondition &)>;
+        /** \brief A rank's report after its solve, as JSON text. */
         using Describe = std::function<std::string()>;
 
         explicit MpiRace(const MpiSession &session) : session_(session) {}

@@ -126,6 +126,19 @@ std::string ompl_parc::tools::MpiSession::agree(const std::string &error) const
     return first;
 }
 
+std::string ompl_parc::tools::MpiSession::errorOf(const std::function<void()> &step)
+{
+    try
+    {
+        step();
+        return {};
+    }
+    catch (const std::exception &e)
+    {
+        return e.what();
+    }
+}
+
 void ompl_parc::tools::MpiSession::barrier() const
 {
     check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier");

@@ -3,6 +3,7 @@
 
 #include <mpi.h>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -43,6 +44,7 @@ namespace ompl_parc::tools
             void start(std::string text, int rank, int tag);
             /** \brief Waits until the message has left this rank's buffer (MPI_Wait); nothing if none is pending. */
             void complete();
+            /** \brief Whether a send was started and not yet completed. */
             bool started() const { return started_; }
 
           private:
@@ -58,8 +60,10 @@ namespace ompl_parc::tools
         MpiSession(const MpiSession &) = delete;
         MpiSession &operator=(const MpiSession &) = delete;
 
-        int rank() const { return rank_; }
-        int size() const { return size_; }
+        /** \brief This process's rank in MPI_COMM_WORLD, and how many ranks there are. */
+        int getRank() const { return rank_; }
+        int getSize() const { return size_; }
+        /** \brief Whether this is rank 0, the one that reads, decides and writes for the run. */
         bool isRoot() const { return rank_ == 0; }
 
         /** \brief Rank 0's \e text on every rank (two broadcasts: the length, then the bytes). */
@@ -73,11 +77,15 @@ namespace ompl_parc::tools
         std::optional<std::pair<int, std::string>> tryReceive(int tag) const;
         /** \brief Every rank's \e text, in rank order, on rank 0 (empty elsewhere). */
         std::vector<std::string> gather(const std::string &text, int tag) const;
+        /** \brief Waits until every rank is here (MPI_Barrier). */
         void barrier() const;
         /** \brief Collective: every rank's \e error (empty: none) goes to rank 0, which picks the first and tells
             everyone; returns it on every rank, prefixed "rank r: " where r is not 0. For set-up steps that can fail
             on some ranks only: all go on, or all stop. */
         std::string agree(const std::string &error) const;
+        /** \brief Runs \e step, returning the message of the exception it throws (empty: it went well): the input
+            of agree(). */
+        static std::string errorOf(const std::function<void()> &step);
         /** \brief Ends every rank of the job at once (MPI_Abort) with exit code \e code: the way out of a failure
             that leaves the other ranks waiting for a message that will not come. */
         [[noreturn]] void abort(int code) const;

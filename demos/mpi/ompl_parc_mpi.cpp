@@ -3,8 +3,9 @@
    Race (default): the demo's problem and P-ARC options; rank k runs OR-P-ARC's instance k (seed mixSeed(race seed,
    k), --workers threads); the first exact solution wins and stops every other rank (MpiRace). The winner smooths its
    plan (--smooth) and sends it to rank 0, which validates it with the independent validator, writes it (--out) and
-   prints which rank won and how every rank ended. What crosses the network: the scenario file once (rank 0 reads it;
-   built-in scenarios are built on every rank), two small messages per rank, and the plan once.
+   prints which rank won and how every rank ended. What crosses the network: the set-up's agreement on errors, the
+   scenario file once (rank 0 reads it; built-in scenarios are built on every rank), the race seed, two small messages
+   per rank, and the plan once.
 
    --benchmark CONFIG.cfg: the runs of a benchmark configuration shared over the ranks (MpiSweep); rank 0 writes the
    same .log and CSV rows as ompl_parc_benchmark would.
@@ -20,23 +21,23 @@
 #include "ompl_parc/io/SolutionFile.h"
 #include "ompl_parc/planners/ORPARC.h"
 #include "ompl_parc/planners/setup/PlannerRegistry.h"
-#include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
-#include "ompl_parc/scenarios/Scenarios.h"
 #include "ompl_parc/util/ParseNumber.h"
 #include "ompl_parc/util/PlannerSeed.h"
 #include "ompl_parc/util/TextFile.h"
 #include "ompl_parc/validation/SolutionValidator.h"
 
-#include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <optional>
+
+#include <unistd.h>
 
 namespace ob = ompl::base;
 namespace po = boost::program_options;
@@ -53,19 +54,15 @@ namespace
         return std::chrono::duration<double>(Clock::now() - start).count();
     }
 
-    /** \brief Runs \e step, turning an exception into its message (empty: it went well). */
-    template <typename Step>
-    std::string attempt(Step &&step)
+    /** \brief Throws unless a file can be written at \e path (its folder exists and is writable, and it is no folder):
+        a bad --out shows before the race, not after it. */
+    void checkWritable(const std::string &path)
     {
-        try
-        {
-            step();
-            return {};
-        }
-        catch (const std::exception &e)
-        {
-            return e.what();
-        }
+        const std::filesystem::path file(path);
+        const std::filesystem::path folder = file.parent_path().empty() ? "." : file.parent_path();
+        if (std::filesystem::is_directory(file) || !std::filesystem::is_directory(folder) ||
+            access(folder.c_str(), W_OK) != 0)
+            throw std::invalid_argument("cannot write --out '" + path + "' (is its folder there and writable?)");
     }
 
     /** \brief The options of the race, read on every rank. */
@@ -75,75 +72,89 @@ namespace
         std::uint32_t seed{1};
         int failRank{-1};
         bool validate{true};
+        std::vector<std::string> params;
     };
 
     /** \brief Everything a rank races with. */
     struct Racer
     {
         std::optional<MultiRobotProblem> problem;
-        ob::PlannerPtr orparc;
+        std::shared_ptr<ORPARC> orparc;
         std::shared_ptr<PARC> instance;
         std::uint_fast32_t raceSeed{0};
         std::size_t problemBytes{0};
     };
 
-    /** \brief The problem on every rank: a scenario file read by rank 0 only and broadcast, a built-in scenario built
-        by every rank. Returns the agreed error (empty: every rank has it). */
+    /** \brief The race's options on every rank (each parses the same command line). */
+    void readOptions(const MpiSession &mpi, const po::variables_map &vm, RaceOptions &options)
+    {
+        options.timeLimit = parseReal(vm["time-limit"].as<std::string>(), "--time-limit", 0., 1e7);
+        if (!(options.timeLimit > 0.))
+            throw std::invalid_argument("--time-limit must be positive");
+        options.seed = static_cast<std::uint32_t>(parseInteger(vm["seed"].as<std::string>(), "--seed", 0, UINT32_MAX));
+        if (vm.count("fail-rank"))
+            options.failRank =
+                static_cast<int>(parseInteger(vm["fail-rank"].as<std::string>(), "--fail-rank", 0, mpi.getSize() - 1));
+        options.validate = vm.count("no-validate") == 0;
+        if (vm.count("param"))
+            options.params = vm["param"].as<std::vector<std::string>>();
+        for (const std::string &param : options.params)
+        {
+            for (const char *rankSet : {"instances=", "total_workers="})
+                if (param.rfind(rankSet, 0) == 0)
+                    throw std::invalid_argument("--param " + param +
+                                                ": the ranks are the instances (mpirun -np K), --workers the threads "
+                                                "of each");
+            if (param.rfind("objective=", 0) == 0 && param != "objective=first")
+                throw std::invalid_argument("--param " + param +
+                                            ": over MPI the first solution wins (the anytime objectives race in "
+                                            "threads: ompl_parc_demo --planner orparc)");
+        }
+        if (vm.count("out") && mpi.isRoot())
+            checkWritable(vm["out"].as<std::string>());
+        ompl::RNG::setSeed(options.seed);
+    }
+
+    /** \brief The problem on every rank: a scenario file read by rank 0 only and broadcast (its text, then its
+        folder, for the files it names), a built-in scenario built by every rank. Returns the agreed error (empty:
+        every rank has it). */
     std::string shareProblem(const MpiSession &mpi, const po::variables_map &vm, Racer &racer)
     {
         if (!vm.count("scenario-file"))
-            return mpi.agree(attempt([&] { racer.problem.emplace(tools::problemFromOptions(vm)); }));
-        json message;
-        if (mpi.isRoot())
-        {
-            const std::string path = vm["scenario-file"].as<std::string>();
-            const std::string error = attempt(
-                [&]
-                {
-                    if (!vm["scenario"].defaulted() || !vm["robots"].defaulted() || !vm["task"].defaulted())
-                        throw std::invalid_argument("give --scenario-file or --scenario/--robots/--task, not both");
-                    message["text"] = TextFile::read(path, "ScenarioFile");
-                    message["folder"] = std::filesystem::path(path).parent_path().string();
-                });
-            if (!error.empty())
-                message = json{{"error", error}};
-        }
-        std::string text = mpi.isRoot() ? message.dump() : std::string();
-        mpi.broadcast(text);
-        racer.problemBytes = text.size();
-        message = json::parse(text);
-        if (message.contains("error"))
-            return message["error"].get<std::string>();
-        return mpi.agree(attempt(
+            return mpi.agree(MpiSession::errorOf([&] { racer.problem.emplace(tools::problemFromOptions(vm)); }));
+        std::string text, folder;
+        std::string error = mpi.agree(MpiSession::errorOf(
             [&]
             {
-                racer.problem.emplace(
-                    ScenarioFile::fromJson(message["text"].get<std::string>(), message["folder"].get<std::string>()));
+                tools::checkProblemSource(vm);
+                if (!mpi.isRoot())
+                    return;
+                const std::string path = vm["scenario-file"].as<std::string>();
+                text = TextFile::read(path, "ScenarioFile");
+                folder = std::filesystem::path(path).parent_path().string();
             }));
+        if (!error.empty())
+            return error;
+        mpi.broadcast(text);
+        mpi.broadcast(folder);
+        racer.problemBytes = text.size() + folder.size();
+        return mpi.agree(MpiSession::errorOf([&] { racer.problem.emplace(ScenarioFile::fromJson(text, folder)); }));
     }
 
-    /** \brief This rank's OR-P-ARC instance: the planner options as ompl_parc_demo reads them for orparc, instance
-        k = this rank. */
-    void makePlanner(const MpiSession &mpi, const po::variables_map &vm, Racer &racer)
+    /** \brief The OR-P-ARC whose instances the ranks are, made from the options as ompl_parc_demo makes orparc; on
+        rank 0 the race seed. */
+    void makePlanner(const MpiSession &mpi, const po::variables_map &vm, const RaceOptions &options, Racer &racer)
     {
         const auto &si = racer.problem->getSpaceInformation();
         if (const std::string coarse = si->checkPlanningResolution(); !coarse.empty())
             throw std::invalid_argument(coarse);
-        const auto params = vm.count("param") ? vm["param"].as<std::vector<std::string>>() : std::vector<std::string>{};
-        for (const std::string &param : params)
-            for (const char *rankSet : {"instances=", "total_workers="})
-                if (param.rfind(rankSet, 0) == 0)
-                    throw std::invalid_argument("--param " + param +
-                                                ": the ranks are the instances (mpirun -np K), "
-                                                "--workers the threads of each");
-        racer.orparc = PlannerRegistry::create("orparc", si, params);
-        PlannerRegistry::setParameter(*racer.orparc, "instances", "1");
-        PlannerRegistry::setParameter(*racer.orparc, "workers", vm["workers"].as<std::string>());
+        racer.orparc = std::static_pointer_cast<ORPARC>(PlannerRegistry::create("orparc", si, options.params));
+        if (vm.count("workers"))
+            PlannerRegistry::setParameter(*racer.orparc, "workers", vm["workers"].as<std::string>());
         PlannerRegistry::setParameter(*racer.orparc, "smooth", vm["smooth"].as<std::string>());
         racer.orparc->setProblemDefinition(racer.problem->createProblemDefinition());
-        auto &orparc = static_cast<ORPARC &>(*racer.orparc);
         // Seed 0 draws one race seed from OMPL's sequence (--seed), on rank 0, for all.
-        racer.raceSeed = mpi.isRoot() ? seedOrDraw(orparc.getSeed()) : 0;
+        racer.raceSeed = mpi.isRoot() ? seedOrDraw(racer.orparc->getSeed()) : 0;
     }
 
     /** \brief The JSON a rank reports after its solve: its seed, stage times and counters. */
@@ -171,28 +182,22 @@ namespace
                                          double timeLimit)
     {
         const int winner = race.getWinner();
-        if (winner < 0 || (mpi.rank() != winner && !mpi.isRoot()))
+        if (winner < 0 || (mpi.getRank() != winner && !mpi.isRoot()))
             return std::nullopt;
         const auto si = MultiRobotSpaceInformation::get(racer.problem->getSpaceInformation(), "ompl_parc_mpi");
-        if (mpi.rank() == winner)
+        if (mpi.getRank() == winner)
         {
             Delivered delivered{racer.instance->getPlan(), 0, 0., 0.};
-            const auto &orparc = static_cast<const ORPARC &>(*racer.orparc);
-            SmoothingStep smoothing;
-            smoothing.setReplanner([] { return std::make_shared<PrioritizedSTRRTSolver>(); });
-            smoothing.setBudget(orparc.getPrototype().getSmoothing());
-            smoothing.apply(si, delivered.plan,
-                            ob::timedPlannerTerminationCondition(std::max(0., timeLimit - race.getElapsed())),
-                            ORPARC::smoothingSeed(racer.instance->getSeed()));
-            if (const auto &report = smoothing.getReport())
-                delivered.smoothing = report->seconds;
+            const auto report = racer.orparc->smoothWinner(
+                delivered.plan, racer.instance->getSeed(),
+                ob::timedPlannerTerminationCondition(std::max(0., timeLimit - race.getElapsed())));
+            delivered.smoothing = report ? report->seconds : 0.;
             if (mpi.isRoot())
                 return delivered;
             const auto sent = Clock::now();
             const std::string text = SolutionFile::toJson(delivered.plan, *si);
-            mpi.send(json{{"smoothing", delivered.smoothing}, {"serialise", secondsSince(sent)}, {"bytes", text.size()}}
-                         .dump(),
-                     0, tools::TAG_PLAN_INFO);
+            mpi.send(json{{"smoothing", delivered.smoothing}, {"serialise", secondsSince(sent)}}.dump(), 0,
+                     tools::TAG_PLAN_INFO);
             mpi.send(text, 0, tools::TAG_PLAN);
             return std::nullopt;
         }
@@ -228,67 +233,10 @@ namespace
         }
     }
 
-    /** \brief The race: returns the tool's exit code on this rank. */
-    int race(const MpiSession &mpi, const po::variables_map &vm, Clock::time_point processStart)
+    /** \brief Rank 0 after the race: the summary, the validation and the solution file; returns the exit code. */
+    int report(const MpiSession &mpi, const po::variables_map &vm, const RaceOptions &options, const Racer &racer,
+               const tools::MpiRace &race, const std::optional<Delivered> &delivered, double startup)
     {
-        RaceOptions options;
-        Racer racer;
-        std::string error = mpi.agree(attempt(
-            [&]
-            {
-                options.timeLimit = parseReal(vm["time-limit"].as<std::string>(), "--time-limit", 0., 1e7);
-                if (!(options.timeLimit > 0.))
-                    throw std::invalid_argument("--time-limit must be positive");
-                options.seed =
-                    static_cast<std::uint32_t>(parseInteger(vm["seed"].as<std::string>(), "--seed", 0, UINT32_MAX));
-                if (vm.count("fail-rank"))
-                    options.failRank = static_cast<int>(
-                        parseInteger(vm["fail-rank"].as<std::string>(), "--fail-rank", 0, mpi.size() - 1));
-                options.validate = vm.count("no-validate") == 0;
-                ompl::RNG::setSeed(options.seed);
-            }));
-        if (error.empty())
-            error = shareProblem(mpi, vm, racer);
-        if (error.empty())
-            error = mpi.agree(attempt([&] { makePlanner(mpi, vm, racer); }));
-        if (error.empty())
-        {
-            std::string raceSeed = std::to_string(racer.raceSeed);
-            mpi.broadcast(raceSeed);
-            racer.raceSeed = std::stoul(raceSeed);
-            // Instance k = rank k, as OR-P-ARC's instance k in threads.
-            error = mpi.agree(attempt(
-                [&]
-                { racer.instance = static_cast<ORPARC &>(*racer.orparc).createInstance(mpi.rank(), racer.raceSeed); }));
-        }
-        if (!error.empty())
-        {
-            if (mpi.isRoot())
-                std::cerr << "ompl_parc_mpi: " << error << std::endl;
-            return tools::EXIT_BAD_INPUT;
-        }
-        const auto &si = racer.problem->getSpaceInformation();
-        std::cout << "scenario   " << racer.problem->getName() << ", " << si->getRobotCount() << " robots\n"
-                  << "planner    OR-P-ARC over MPI: " << mpi.size() << (mpi.size() == 1 ? " rank x " : " ranks x ")
-                  << racer.instance->getWorkers() << " worker(s), race seed " << racer.raceSeed
-                  << " (ompl_parc_demo --planner orparc --param seed=" << racer.raceSeed
-                  << " races the same instances in threads)\n";
-
-        tools::MpiRace race(mpi);
-        const double startup = secondsSince(processStart);
-        race.run(
-            [&](const ob::PlannerTerminationCondition &ptc)
-            {
-                if (mpi.rank() == options.failRank)
-                    throw std::runtime_error("failure injected by --fail-rank " + std::to_string(options.failRank));
-                return racer.instance->solve(ptc);
-            },
-            [&] { return describe(*racer.instance); }, options.timeLimit);
-        const double raceTime = race.getElapsed();
-        const auto delivered = deliverPlan(mpi, race, racer, options.timeLimit);
-        if (!mpi.isRoot())
-            return tools::EXIT_SOLVED;  // rank 0 speaks for the run
-
         std::cout << std::fixed << std::setprecision(3) << "start-up   " << startup
                   << " s on rank 0 (MPI, problem on every rank: " << racer.problemBytes << " bytes broadcast)\n";
         if (race.getFailedRank() >= 0)
@@ -301,7 +249,12 @@ namespace
         std::cout << "status     "
                   << (race.getWinner() >= 0 ? "Exact solution from rank " + std::to_string(race.getWinner())
                                             : "no rank solved it: " + race.getClaims()[0].reason)
-                  << " after " << raceTime << " s (every rank stopped and joined)\n";
+                  << " after " << race.getClaims()[std::max(race.getWinner(), 0)].returnedAfter << " s (all "
+                  << mpi.getSize() << " ranks stopped and joined after "
+                  << std::max_element(race.getClaims().begin(), race.getClaims().end(),
+                                      [](const auto &a, const auto &b) { return a.returnedAfter < b.returnedAfter; })
+                         ->returnedAfter
+                  << " s)\n";
         printClaims(race);
         if (!delivered)
             return tools::EXIT_FAILED;
@@ -312,21 +265,85 @@ namespace
                                                   std::to_string(delivered->transfer) + " s")
                   << ", smoothed " << delivered->smoothing << " s\n";
         const auto checkStart = Clock::now();
-        const ValidationReport report =
+        const ValidationReport check =
             options.validate ? SolutionValidator(*racer.problem).validate(plan) : ValidationReport{};
         std::cout << "makespan   " << plan.getMakespan() << " timesteps, sum of costs " << plan.getSumOfCosts() << "\n"
                   << "validated  "
                   << (!options.validate ? std::string("skipped (--no-validate)")
-                      : report.valid    ? "yes (" + std::to_string(secondsSince(checkStart)) + " s)"
-                                        : "NO: " + report.message)
+                      : check.valid     ? "yes (" + std::to_string(secondsSince(checkStart)) + " s)"
+                                        : "NO: " + check.message)
                   << std::endl;
         if (vm.count("out"))
         {
-            SolutionFile::write(vm["out"].as<std::string>(), plan,
-                                *MultiRobotSpaceInformation::get(si, "ompl_parc_mpi"));
+            SolutionFile::write(
+                vm["out"].as<std::string>(), plan,
+                *MultiRobotSpaceInformation::get(racer.problem->getSpaceInformation(), "ompl_parc_mpi"));
             std::cout << "solution   " << vm["out"].as<std::string>() << std::endl;
         }
-        return report.valid || !options.validate ? tools::EXIT_SOLVED : tools::EXIT_FAILED;
+        return check.valid || !options.validate ? tools::EXIT_SOLVED : tools::EXIT_FAILED;
+    }
+
+    /** \brief The race: returns the tool's exit code on this rank (the others' is 0 unless the input is bad). */
+    int race(const MpiSession &mpi, const po::variables_map &vm, Clock::time_point processStart)
+    {
+        RaceOptions options;
+        Racer racer;
+        std::string error = mpi.agree(MpiSession::errorOf([&] { readOptions(mpi, vm, options); }));
+        if (error.empty())
+            error = shareProblem(mpi, vm, racer);
+        if (error.empty())
+            error = mpi.agree(MpiSession::errorOf([&] { makePlanner(mpi, vm, options, racer); }));
+        if (error.empty())
+        {
+            std::string raceSeed = std::to_string(racer.raceSeed);
+            mpi.broadcast(raceSeed);
+            racer.raceSeed = std::stoul(raceSeed);
+            // Instance k = rank k, as OR-P-ARC's instance k in threads.
+            error = mpi.agree(MpiSession::errorOf(
+                [&] { racer.instance = racer.orparc->createInstance(mpi.getRank(), racer.raceSeed); }));
+        }
+        if (!error.empty())
+        {
+            if (mpi.isRoot())
+                std::cerr << "ompl_parc_mpi: " << error << std::endl;
+            return tools::EXIT_BAD_INPUT;
+        }
+        const auto &si = racer.problem->getSpaceInformation();
+        std::cout << "scenario   " << racer.problem->getName() << ", " << si->getRobotCount() << " robots\n"
+                  << "planner    OR-P-ARC over MPI: " << mpi.getSize()
+                  << (mpi.getSize() == 1 ? " rank x " : " ranks x ") << racer.instance->getWorkers()
+                  << " worker(s), race seed " << racer.raceSeed
+                  << " (the same instances race in threads with ompl_parc_demo --planner orparc --param instances="
+                  << mpi.getSize() << " --workers " << racer.instance->getWorkers()
+                  << " --param seed=" << racer.raceSeed;
+        for (const std::string &param : options.params)
+            if (param.rfind("seed=", 0) != 0)
+                std::cout << " --param " << param;
+        std::cout << ")\n";
+
+        tools::MpiRace race(mpi);
+        const double startup = secondsSince(processStart);
+        race.run(
+            [&](const ob::PlannerTerminationCondition &ptc)
+            {
+                if (mpi.getRank() == options.failRank)
+                    throw std::runtime_error("failure injected by --fail-rank " + std::to_string(options.failRank));
+                return racer.instance->solve(ptc);
+            },
+            [&] { return describe(*racer.instance); }, options.timeLimit);
+        const auto delivered = deliverPlan(mpi, race, racer, options.timeLimit);
+        if (!mpi.isRoot())
+            return tools::EXIT_SOLVED;  // rank 0 speaks for the run
+        // Every other rank is done with MPI: what fails from here is rank 0's alone (an exit code, no abort).
+        try
+        {
+            return report(mpi, vm, options, racer, race, delivered, startup);
+        }
+        catch (const std::exception &e)
+        {
+            std::cerr << "ompl_parc_mpi: " << e.what() << std::endl;
+            return tools::EXIT_BAD_INPUT;
+        }
     }
 }  // namespace
 
@@ -358,7 +375,7 @@ int main(int argc, char **argv)
                 "seed", po::value<std::string>()->default_value("1"),
                 "OMPL's random seed (the race seed is drawn from it unless --param seed=S gives one)")(
                 "time-limit", po::value<std::string>()->default_value("30"), "planning time limit in seconds")(
-                "workers", po::value<std::string>()->default_value("1"), "worker threads of each rank's P-ARC (W_k)")(
+                "workers", po::value<std::string>(), "worker threads of each rank's P-ARC (W_k; default 1)")(
                 "smooth", po::value<std::string>()->default_value("1"),
                 "seconds of time-aware shortcutting of the winner's plan; 0: off")(
                 "out", po::value<std::string>(), "write the solution to this JSON file (rank 0)")(
@@ -369,7 +386,8 @@ int main(int argc, char **argv)
                 "for testing the failure path: this rank's solve throws (the run ends with exit 1 and its message)");
             // Every rank parses the same command line: an error is the same everywhere, and rank 0 alone says it.
             po::variables_map vm;
-            if (const std::string error = mpi.agree(attempt([&] { vm = tools::parse(argc, argv, options); }));
+            if (const std::string error =
+                    mpi.agree(MpiSession::errorOf([&] { vm = tools::parse(argc, argv, options); }));
                 !error.empty())
             {
                 if (mpi.isRoot())
@@ -384,7 +402,7 @@ int main(int argc, char **argv)
             catch (const std::exception &e)
             {
                 // Past the agreed set-up the other ranks may be waiting for this one: end them all.
-                std::cerr << "ompl_parc_mpi: rank " << mpi.rank() << ": " << e.what() << std::endl;
+                std::cerr << "ompl_parc_mpi: rank " << mpi.getRank() << ": " << e.what() << std::endl;
                 mpi.abort(tools::EXIT_FAILED);
             }
         });

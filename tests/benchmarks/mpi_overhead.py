@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """OR-P-ARC-2x1 over MPI against OR-P-ARC-2x1 in threads, side by side in one run: the same problems and seeds (the
 race seed given, so rank k and thread k run the same instance), no smoothing, no validation. Reports per problem the
-solved runs of each (they should agree), the median solve time (the race, as each tool reports it), the median wall
+solved runs of each and whether the same seeds solved (by exit code: the winner may differ, it is a race), the median
+solve time (the race until every instance joined, as each tool reports it), the median wall
 time of the whole command (mpirun's launch included), and the MPI-only costs ompl_parc_mpi reports: start-up on
 rank 0 (MPI_Init, the problem on every rank) and the plan's transfer (serialise, send, parse).
 Rounds alternate threads and MPI. Run on a quiet machine: the two ranks and the two threads each want a core.
@@ -37,7 +38,7 @@ def main():
     parser.add_argument("--time-limit", default="60")
     args = parser.parse_args()
     mpi_flags = ["--oversubscribe", "-np", "2"] + (["--allow-run-as-root"] if os.geteuid() == 0 else [])
-    print("| problem | seeds | solved threads / MPI | same runs solved | median solve threads / MPI (s) "
+    print("| problem | seeds | solved threads / MPI | same runs solved (exit codes) | median solve threads / MPI (s) "
           "| median wall threads / MPI (s) | MPI start-up (s) | plan transfer (ms) |")
     print("|---|---|---|---|---|---|---|---|")
     for scenario, robots, task in PROBLEMS:
