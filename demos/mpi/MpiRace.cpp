@@ -86,8 +86,8 @@ void ompl_parc::tools::MpiRace::run(const Solve &solve, const Describe &describe
     }
 }
 
-void ompl_parc::tools::MpiRace::referee(const std::function<bool()> &solved, const std::function<std::string()> &claim,
-                                        const std::function<void()> &stop)
+void ompl_parc::tools::MpiRace::referee(const std::function<bool()> &returned,
+                                        const std::function<std::string()> &claim, const std::function<void()> &stop)
 {
     claims_.assign(static_cast<std::size_t>(session_.getSize()), Claim{});
     std::vector<bool> claimed(claims_.size(), false);
@@ -113,7 +113,7 @@ void ompl_parc::tools::MpiRace::referee(const std::function<bool()> &solved, con
     };
     while (!decided)
     {
-        if (solved() && !claimed[0])
+        if (returned() && !claimed[0])
             take(0, claim());
         while (!decided)
         {
@@ -141,14 +141,14 @@ void ompl_parc::tools::MpiRace::referee(const std::function<bool()> &solved, con
         send.complete();
 }
 
-void ompl_parc::tools::MpiRace::play(const std::function<bool()> &solved, const std::function<std::string()> &claim,
+void ompl_parc::tools::MpiRace::play(const std::function<bool()> &returned, const std::function<std::string()> &claim,
                                      const std::function<void()> &stop)
 {
     MpiSession::PendingSend sent;
     std::string end;
     for (;;)
     {
-        if (solved() && !sent.started())
+        if (returned() && !sent.started())
             sent.start(claim(), 0, TAG_CLAIM);
         if (auto message = session_.tryReceive(TAG_END))
         {

@@ -61,10 +61,10 @@ namespace ompl_parc::tools
 
       private:
         /** \brief Rank 0's side: referee until the outcome is known, tell everyone, collect the remaining claims. */
-        void referee(const std::function<bool()> &solved, const std::function<std::string()> &claim,
+        void referee(const std::function<bool()> &returned, const std::function<std::string()> &claim,
                      const std::function<void()> &stop);
         /** \brief Another rank's side: claim when the solve returns, stop when the outcome arrives. */
-        void play(const std::function<bool()> &solved, const std::function<std::string()> &claim,
+        void play(const std::function<bool()> &returned, const std::function<std::string()> &claim,
                   const std::function<void()> &stop);
 
         const MpiSession &session_;
