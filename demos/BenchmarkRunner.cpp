@@ -95,6 +95,7 @@ namespace
              {problem.checkEndpoints(), problem.getSpaceInformation()->checkPlanningResolution()})
             if (!reason.empty())
                 throw std::invalid_argument(reason);
+        instance.validator = std::make_shared<const SolutionValidator>(problem);
         for (const auto &entry : config.getPlanners())
         {
             auto planner = PlannerRegistry::create(entry.type, problem.getSpaceInformation(), entry.params);
@@ -135,6 +136,12 @@ namespace
             else
                 out << std::setprecision(2) << median(ratios) << " |\n";
         }
+    }
+
+    /** \brief The PlannerStatus a run's properties record (OMPL's "status ENUM"). */
+    ob::PlannerStatus statusOf(const ompl::tools::Benchmark::RunProperties &properties)
+    {
+        return ob::PlannerStatus(static_cast<ob::PlannerStatus::StatusType>(std::stoi(properties.at("status ENUM"))));
     }
 
     /** \brief OMPL's Benchmark whose experiment is assembled from run records instead of run: its log is OMPL's own
@@ -197,7 +204,7 @@ namespace
                     try
                     {
                         const MultiRobotPlan plan = PlannerRegistry::planOf(*planner, si, false);
-                        const ValidationReport report = SolutionValidator(problem).validate(plan);
+                        const ValidationReport report = instance.validator->validate(plan);
                         success = report.valid;
                         verdict = report.valid ? "valid" : report.message;
                         // Every planner's plan against the same bounds (our planners report them too).
@@ -217,11 +224,9 @@ namespace
                 properties["success BOOLEAN"] = success ? "1" : "0";
                 properties["validation STRING"] = verdict;
                 properties["seed INTEGER"] = std::to_string(seed);
-                const auto status =
-                    ob::PlannerStatus(static_cast<ob::PlannerStatus::StatusType>(std::stoi(properties["status ENUM"])));
                 log << "[" << counter << "] " << config.getProblemName() << " " << planner->getName() << " seed "
-                    << seed << ": " << (success ? "solved" : status.asString()) << " in " << properties["time REAL"]
-                    << " s" << std::endl;
+                    << seed << ": " << (success ? "solved" : statusOf(properties).asString()) << " in "
+                    << properties["time REAL"] << " s" << std::endl;
             });
 
         ompl::tools::Benchmark::Request request(config.getTimeLimit(), config.getMemLimit(), 1);
@@ -253,16 +258,14 @@ namespace
                   tools::ResultsCsv &csv, Tally &tally)
     {
         const auto &planner = instance.planners.at(record.planner);
-        auto properties = record.properties;
-        const bool success = properties["success BOOLEAN"] == "1";
-        tally[planner->getName()].push_back(
-            {success, std::stod(properties["time REAL"]), success ? std::stod(properties["makespan_ratio REAL"]) : 0.});
-        const auto status =
-            ob::PlannerStatus(static_cast<ob::PlannerStatus::StatusType>(std::stoi(properties["status ENUM"])));
+        const auto &properties = record.properties;
+        const bool success = properties.at("success BOOLEAN") == "1";
+        tally[planner->getName()].push_back({success, std::stod(properties.at("time REAL")),
+                                             success ? std::stod(properties.at("makespan_ratio REAL")) : 0.});
         csv.write({instance.scenario, instance.problem.getSpaceInformation()->getRobotCount(), instance.task,
-                   static_cast<unsigned int>(std::stoul(properties["seed INTEGER"])), workerBudget(*planner),
+                   static_cast<unsigned int>(std::stoul(properties.at("seed INTEGER"))), workerBudget(*planner),
                    planner->getName(), config.getPlanners().at(record.planner).type, config.getTimeLimit(), success,
-                   status.asString()},
+                   statusOf(properties).asString()},
                   properties);
     }
 
@@ -339,17 +342,18 @@ namespace
         /** \brief Takes one run's record. */
         void add(tools::RunRecord record)
         {
-            const Instance &instance = instances_.at(record.instance);
+            const std::size_t index = record.instance;
+            const Instance &instance = instances_.at(index);
             writeRow(config_, instance, record, csv_, tally_);
             results_.invalid += record.invalid ? 1 : 0;
-            auto &runs = pending_[record.instance];
+            auto &runs = pending_[index];
             runs.push_back(std::move(record));
             if (runs.size() < instance.planners.size() * config_.getRunCount())
                 return;
             std::sort(runs.begin(), runs.end(),
                       [](const tools::RunRecord &a, const tools::RunRecord &b)
                       { return std::tie(a.planner, a.run) < std::tie(b.planner, b.run); });
-            writeLog(config_, instance, runs, results_.logs.at(&instance - instances_.data()));
+            writeLog(config_, instance, runs, results_.logs.at(index));
             runs.clear();
         }
 
@@ -430,15 +434,14 @@ void ompl_parc::tools::BenchmarkRunner::runRuns(std::size_t rank, std::size_t ra
     for (std::size_t k = rank; k < getRunCount(); k += ranks)
     {
         const std::size_t instance = k / (planners * runs), planner = k / runs % planners, run = k % runs;
+        ++done;
+        if (ranks == 1 && k % (planners * runs) == 0)
+            log << "ompl_parc_benchmark: problem " << instance + 1 << "/" << instances_.size() << ": "
+                << instances_[instance].scenario << std::endl;
         // One process counts per problem, as it goes through them; a rank counts its share.
-        std::string counter = std::to_string(++done) + "/" + std::to_string(share) + " on rank " + std::to_string(rank);
-        if (ranks == 1)
-        {
-            if (k % (planners * runs) == 0)
-                log << "ompl_parc_benchmark: problem " << instance + 1 << "/" << instances_.size() << ": "
-                    << instances_[instance].scenario << std::endl;
-            counter = std::to_string(k % (planners * runs) + 1) + "/" + std::to_string(planners * runs);
-        }
+        const std::string counter =
+            ranks == 1 ? std::to_string(k % (planners * runs) + 1) + "/" + std::to_string(planners * runs)
+                       : std::to_string(done) + "/" + std::to_string(share) + " on rank " + std::to_string(rank);
         take(runOnce(config_, instances_[instance], instance, planner, run, log, counter));
     }
 }

@@ -5,11 +5,13 @@
 
 #include "ompl_parc/model/MultiRobotProblem.h"
 #include "ompl_parc/planners/setup/BenchmarkConfig.h"
+#include "ompl_parc/validation/SolutionValidator.h"
 
 #include <ompl/base/Planner.h>
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -28,13 +30,15 @@ namespace ompl_parc::tools
         std::string summary;
     };
 
-    /** \brief One problem of the experiment, its CSV scenario label and the planners made for it. */
+    /** \brief One problem of the experiment, its CSV scenario label, the planners made for it and the independent
+        validator that re-checks their solutions (made once per problem, used for every run). */
     struct Instance
     {
         MultiRobotProblem problem;
         std::string scenario;
         std::size_t task{0};
         std::vector<ompl::base::PlannerPtr> planners;
+        std::shared_ptr<const SolutionValidator> validator;
     };
 
     /** \brief Runs a benchmark configuration (BenchmarkConfig) with OMPL's own ompl::tools::Benchmark, one run at a

@@ -78,10 +78,7 @@ void ompl_parc::tools::MpiRace::run(const Solve &solve, const Describe &describe
     catch (...)
     {
         if (planner.joinable())
-        {
-            stopped = true;
-            planner.join();
-        }
+            stop();
         throw;
     }
 }
