@@ -1,5 +1,7 @@
 #include "ompl_parc/statespaces/CompositeStateSpace.h"
 
+#include "ompl_parc/statespaces/SpaceRegistryLock.h"
+
 #include <ompl/util/Exception.h>
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
@@ -74,7 +76,7 @@ ompl_parc::CompositeStateSpacePtr ompl_parc::CompositeStateSpace::createSubspace
     spaces.reserve(robots.size());
     for (std::size_t r : robots)
         spaces.push_back(getRobotSpace(r));
-    return std::make_shared<CompositeStateSpace>(spaces);
+    return makeStateSpace<CompositeStateSpace>(spaces);
 }
 
 void ompl_parc::CompositeStateSpace::splitState(const ob::State *state, const std::vector<std::size_t> &robots,

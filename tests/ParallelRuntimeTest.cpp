@@ -1,12 +1,17 @@
 #include "ompl_parc/parallel/OrTaskRunner.h"
 #include "ompl_parc/parallel/WorkerPool.h"
+#include "ompl_parc/statespaces/CompositeStateSpace.h"
+#include "ompl_parc/statespaces/SpaceRegistryLock.h"
 
 #include <gtest/gtest.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/util/Exception.h>
 
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 using namespace ompl_parc;
 namespace ob = ompl::base;
@@ -28,6 +33,33 @@ TEST(WorkerPool, RunsEveryWorkerOnceAndReportsCpu)
     for (double c : cpu)
         EXPECT_GT(c, 0.);
     EXPECT_THROW(WorkerPool(0), ompl::Exception);
+}
+
+/* Stages back to back (workers still spinning from the last one), and after pauses longer than the spin (workers
+   asleep): every stage runs each worker exactly once, the caller as worker 0, and none starts before the caller
+   has asked for it. W = 2 spins on this 2-core machine; W = 6 outnumbers the cores and never spins. */
+TEST(WorkerPool, EveryStageRunsEachWorkerOnceWhetherItsWorkersSpinOrSleep)
+{
+    for (unsigned int workers : {2u, 6u})
+    {
+        WorkerPool pool(workers);
+        const auto caller = std::this_thread::get_id();
+        std::vector<std::atomic<int>> runs(workers);
+        for (int stage = 0; stage < 400; ++stage)
+        {
+            if (stage % 100 == 99)
+                std::this_thread::sleep_for(std::chrono::duration<double>(3. * WorkerPool::SPIN_SECONDS));
+            const auto cpu = pool.run(
+                [&](unsigned int w)
+                {
+                    EXPECT_EQ(w == 0, std::this_thread::get_id() == caller);
+                    ++runs[w];
+                });
+            ASSERT_EQ(cpu.size(), workers);
+            for (unsigned int w = 0; w < workers; ++w)
+                ASSERT_EQ(runs[w].load(), stage + 1) << "worker " << w << " in stage " << stage;
+        }
+    }
 }
 
 TEST(WorkerPool, AThrowingWorkerStopsTheOthersAndTheErrorReachesTheCaller)
@@ -105,4 +137,34 @@ TEST(OrTaskRunner, WithoutLocalOrEachTaskIsAttemptedOnceAndTheOuterConditionStop
                 stats);
     EXPECT_FALSE(results[2].has_value());
     EXPECT_LE(stats.attempts, 3u);
+}
+
+/* Threads building and dropping composite spaces at once, as P-ARC's workers do for every robot plan and repair: each
+   gets whole, working spaces, and a composite that takes its robot spaces down with it nests the lock (a thread
+   blocking on its own lock would hang this test). */
+TEST(SpaceRegistryLock, ThreadsBuildAndDropSpacesAtOnce)
+{
+    std::vector<std::thread> threads;
+    std::atomic<int> built{0};
+    for (int t = 0; t < 4; ++t)
+        threads.emplace_back(
+            [&built]
+            {
+                for (int k = 0; k < 300; ++k)
+                {
+                    std::vector<ob::StateSpacePtr> robots{makeStateSpace<ob::RealVectorStateSpace>(2),
+                                                          makeStateSpace<ob::RealVectorStateSpace>(3)};
+                    for (auto &robot : robots)
+                        robot->as<ob::RealVectorStateSpace>()->setBounds(-1., 1.);
+                    auto team = makeStateSpace<CompositeStateSpace>(robots);
+                    robots.clear();  // the composite now holds the last references
+                    const auto second = team->createSubspace({1});
+                    team.reset();
+                    if (second->getDimension() == 3u)
+                        ++built;
+                }
+            });
+    for (auto &thread : threads)
+        thread.join();
+    EXPECT_EQ(built.load(), 4 * 300);
 }

@@ -1,5 +1,7 @@
 #include "ompl_parc/model/MultiRobotProblem.h"
 
+#include "ompl_parc/collision/CapsuleCollision.h"
+
 #include <ompl/base/ScopedState.h>
 #include <ompl/util/Exception.h>
 
@@ -40,9 +42,13 @@ std::string ompl_parc::MultiRobotProblem::checkConfigurations(const std::vector<
         if (validity != Robot::Validity::VALID)
             return what + " of robot '" + si_->getRobot(i)->getName() + "' is " + Robot::toString(validity);
     }
+    // Each robot's body once, then every pair (robotsCollide() would build both bodies for each of the n^2 / 2).
+    std::vector<CollisionBody> bodies(configs.size());
+    for (std::size_t i = 0; i < configs.size(); ++i)
+        si_->getRobot(i)->computeBody(configs[i].data(), bodies[i]);
     for (std::size_t i = 0; i < configs.size(); ++i)
         for (std::size_t j = i + 1; j < configs.size(); ++j)
-            if (si_->robotsCollide(i, configs[i].data(), j, configs[j].data()))
+            if (bodiesCollide(bodies[i], bodies[j]))
                 return what + "s of robots '" + si_->getRobot(i)->getName() + "' and '" + si_->getRobot(j)->getName() +
                        "' collide";
     return "";

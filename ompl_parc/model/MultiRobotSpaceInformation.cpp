@@ -4,6 +4,7 @@
 #include "ompl_parc/model/MultiRobotValidityChecker.h"
 #include "ompl_parc/robots/RakeMotionValidator.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
+#include "ompl_parc/statespaces/SpaceRegistryLock.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/util/Exception.h>
@@ -56,7 +57,7 @@ namespace
                     throw ompl::Exception(
                         "MultiRobotSpaceInformation",
                         "bounds of robot '" + robot.getName() + "' are empty in dimension " + std::to_string(d));
-            auto space = std::make_shared<ob::RealVectorStateSpace>(robot.getDimension());
+            auto space = ompl_parc::makeStateSpace<ob::RealVectorStateSpace>(robot.getDimension());
             space->setBounds(b);
             space->setName(robot.getName());
             space->setLongestValidSegmentFraction(std::min(0.5, 1. / (resolution * space->getMaximumExtent())));
@@ -72,7 +73,7 @@ namespace
 ompl_parc::MultiRobotSpaceInformation::MultiRobotSpaceInformation(std::vector<RobotPtr> robots, double resolution,
                                                                   const std::vector<ob::RealVectorBounds> &bounds,
                                                                   std::uint_fast32_t seed)
-    : ob::SpaceInformation(std::make_shared<CompositeStateSpace>(robotSpaces(robots, resolution, bounds, seed))),
+    : ob::SpaceInformation(makeStateSpace<CompositeStateSpace>(robotSpaces(robots, resolution, bounds, seed))),
       robots_(std::move(robots)),
       composite_(std::static_pointer_cast<CompositeStateSpace>(getStateSpace())),
       resolution_(resolution)

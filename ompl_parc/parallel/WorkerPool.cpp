@@ -2,80 +2,161 @@
 
 #include "ompl_parc/parallel/StageClock.h"
 
-#include <boost/asio/post.hpp>
 #include <ompl/util/Exception.h>
 
-#include <atomic>
-#include <condition_variable>
-#include <exception>
-#include <mutex>
+#include <algorithm>
+#include <chrono>
+#include <utility>
 
-struct ompl_parc::WorkerPool::Stage
+#ifdef __linux__
+#include <pthread.h>
+#include <sched.h>
+#endif
+
+namespace
 {
-    std::mutex mutex;
-    std::condition_variable done;
-    unsigned int running{0};
-    std::exception_ptr error;
-    std::atomic<bool> aborted{false};
-    std::vector<double> cpu;
-};
+    /** The cores this process may run on (its affinity mask on Linux, e.g. under taskset or a container's
+        cpuset; elsewhere the hardware's count). */
+    unsigned int usableCores()
+    {
+#ifdef __linux__
+        cpu_set_t allowed;
+        if (sched_getaffinity(0, sizeof(allowed), &allowed) == 0)
+            return static_cast<unsigned int>(std::max(1, CPU_COUNT(&allowed)));
+#endif
+        return std::max(1u, std::thread::hardware_concurrency());
+    }
+}  // namespace
 
-ompl_parc::WorkerPool::WorkerPool(unsigned int workers) : workers_(workers)
+ompl_parc::WorkerPool::WorkerPool(unsigned int workers) : workers_(workers), spin_(workers <= usableCores())
 {
     if (workers == 0)
         throw ompl::Exception("WorkerPool", "needs at least one worker");
-    if (workers > 1)
-        pool_ = std::make_unique<boost::asio::thread_pool>(workers);
+    cpu_.assign(workers, 0.);
+    threads_.reserve(workers - 1);
+    for (unsigned int w = 1; w < workers; ++w)
+        threads_.emplace_back([this, w] { serve(w); });
 }
 
 ompl_parc::WorkerPool::~WorkerPool()
 {
-    if (pool_)
-        pool_->join();
+    {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        closing_ = true;
+    }
+    stageStarted_.notify_all();
+    for (auto &thread : threads_)
+        thread.join();
 }
 
-bool ompl_parc::WorkerPool::aborted() const
+template <typename Ready>
+void ompl_parc::WorkerPool::spinFor(const Ready &ready) const
 {
-    return stage_ && stage_->aborted.load();
+    if (!spin_)
+        return;
+    const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(SPIN_SECONDS);
+    for (unsigned int k = 1; !ready(); ++k)
+    {
+        std::this_thread::yield();  // a thread waiting for this core (the caller, say) goes first
+        if (k % 64 == 0 && std::chrono::steady_clock::now() > until)
+            return;
+    }
+}
+
+template <typename Ready>
+void ompl_parc::WorkerPool::sleepFor(const Ready &ready, std::condition_variable &wake)
+{
+    std::unique_lock<std::mutex> lock(mutex_);
+    wake.wait(lock, ready);
+}
+
+void ompl_parc::WorkerPool::serve(unsigned int worker)
+{
+    unsigned long seen = 0;
+    bool spin = false;  // a new thread sleeps until the first stage: it may share the caller's core
+    while (true)
+    {
+        const auto ready = [&] { return closing_.load() || generation_.load() != seen; };
+        if (spin)
+            spinFor(ready);
+        sleepFor(ready, stageStarted_);
+        if (closing_)
+            return;
+        spin = true;
+        leaveCallerCore();
+        seen = generation_.load();
+        runBody(worker);
+        const std::lock_guard<std::mutex> lock(mutex_);
+        if (--running_ == 0)
+            stageDone_.notify_one();
+    }
+}
+
+void ompl_parc::WorkerPool::leaveCallerCore() const
+{
+#ifdef __linux__
+    const int core = sched_getcpu();
+    if (core < 0 || core != callerCore_.load())
+        return;
+    cpu_set_t allowed;
+    if (pthread_getaffinity_np(pthread_self(), sizeof(allowed), &allowed) != 0)
+        return;
+    cpu_set_t others = allowed;
+    CPU_CLR(core, &others);
+    if (CPU_COUNT(&others) == 0)
+        return;
+    // Leaving the mask moves this thread to another allowed core at once; the original mask is restored right
+    // after, and the thread stays where it now is until it next sleeps.
+    if (pthread_setaffinity_np(pthread_self(), sizeof(others), &others) == 0)
+        pthread_setaffinity_np(pthread_self(), sizeof(allowed), &allowed);
+#endif
+}
+
+void ompl_parc::WorkerPool::runBody(unsigned int worker)
+{
+    const double start = StageClock::threadCpu();
+    try
+    {
+        (*body_)(worker);
+    }
+    catch (...)
+    {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        if (!error_)
+            error_ = std::current_exception();
+        aborted_ = true;
+    }
+    cpu_[worker] = StageClock::threadCpu() - start;  // each worker its own entry; read after the stage's join
 }
 
 std::vector<double> ompl_parc::WorkerPool::run(const std::function<void(unsigned int)> &body)
 {
-    auto stage = std::make_shared<Stage>();
-    stage_ = stage;
-    if (!pool_)  // one worker: the calling thread runs the stage, no hand-off (ARC)
+#ifdef __linux__
+    callerCore_ = sched_getcpu();
+#endif
+    aborted_ = false;
+    error_ = nullptr;
+    body_ = &body;
+    if (workers_ > 1)
     {
-        const double start = StageClock::threadCpu();
-        body(0);
-        return {StageClock::threadCpu() - start};
+        {
+            const std::lock_guard<std::mutex> lock(mutex_);
+            running_ = workers_ - 1;
+            ++generation_;
+        }
+        stageStarted_.notify_all();
+        // A worker woken onto this core runs now (and moves off it, see leaveCallerCore) instead of after our slice.
+        std::this_thread::yield();
     }
-    stage->running = workers_;
-    stage->cpu.assign(workers_, 0.);
-    for (unsigned int w = 0; w < workers_; ++w)
-        boost::asio::post(*pool_,
-                          [stage, w, &body]
-                          {
-                              const double start = StageClock::threadCpu();
-                              try
-                              {
-                                  body(w);
-                              }
-                              catch (...)
-                              {
-                                  std::lock_guard<std::mutex> lock(stage->mutex);
-                                  if (!stage->error)
-                                      stage->error = std::current_exception();
-                                  stage->aborted = true;
-                              }
-                              const double cpu = StageClock::threadCpu() - start;
-                              std::lock_guard<std::mutex> lock(stage->mutex);
-                              stage->cpu[w] = cpu;
-                              if (--stage->running == 0)
-                                  stage->done.notify_all();
-                          });
-    std::unique_lock<std::mutex> lock(stage->mutex);
-    stage->done.wait(lock, [&stage] { return stage->running == 0; });
-    if (stage->error)
-        std::rethrow_exception(stage->error);
-    return stage->cpu;
+    runBody(0);
+    if (workers_ > 1)
+    {
+        const auto done = [this] { return running_.load() == 0; };
+        spinFor(done);
+        sleepFor(done, stageDone_);
+    }
+    body_ = nullptr;
+    if (error_)
+        std::rethrow_exception(std::exchange(error_, nullptr));
+    return cpu_;
 }

@@ -4,6 +4,7 @@
 #include "ompl_parc/spacetime/SpaceTimeMotionValidator.h"
 #include "ompl_parc/spacetime/SpaceTimeValidityChecker.h"
 #include "ompl_parc/spacetime/SpaceTimeStateSpace.h"
+#include "ompl_parc/statespaces/SpaceRegistryLock.h"
 
 #include <ompl/util/Exception.h>
 
@@ -76,8 +77,7 @@ std::optional<std::size_t> ompl_parc::DynamicObstacles::earliestHold(const doubl
 ompl::base::SpaceInformationPtr ompl_parc::createSpaceTimeSpaceInformation(const ompl::base::StateSpacePtr &space,
                                                                            const DynamicObstaclesPtr &obstacles)
 {
-    auto si =
-        std::make_shared<ompl::base::SpaceInformation>(std::make_shared<spacetime::SpaceTimeStateSpace>(space, 1.));
+    auto si = std::make_shared<ompl::base::SpaceInformation>(makeStateSpace<spacetime::SpaceTimeStateSpace>(space, 1.));
     si->setStateValidityChecker(std::make_shared<SpaceTimeValidityChecker>(si.get(), obstacles));
     si->setMotionValidator(std::make_shared<SpaceTimeMotionValidator>(si.get(), obstacles));
     si->setup();

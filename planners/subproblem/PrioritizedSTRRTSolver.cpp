@@ -4,6 +4,7 @@
 #include "ompl_parc/spacetime/SpaceTimeMotionValidator.h"
 #include "ompl_parc/spacetime/SpaceTimeStateSpace.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
+#include "ompl_parc/statespaces/SpaceRegistryLock.h"
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
@@ -41,7 +42,8 @@ namespace
     ob::SpaceInformationPtr probeSpaceInformation()
     {
         return std::make_shared<ob::SpaceInformation>(
-            std::make_shared<ompl_parc::spacetime::SpaceTimeStateSpace>(std::make_shared<ob::RealVectorStateSpace>(1)));
+            ompl_parc::makeStateSpace<ompl_parc::spacetime::SpaceTimeStateSpace>(
+                ompl_parc::makeStateSpace<ob::RealVectorStateSpace>(1)));
     }
 }  // namespace
 
