@@ -167,6 +167,13 @@ void ompl_parc::ArcPlannerBase::setHorizon(unsigned int horizon)
     options_.horizon = horizon;
 }
 
+void ompl_parc::ArcPlannerBase::setBatchPerWorker(unsigned int conflicts)
+{
+    if (conflicts == 0)
+        throw ompl::Exception(getName(), "batch_per_worker must be at least 1");
+    options_.batchPerWorker = conflicts;
+}
+
 const ompl_parc::MultiRobotPlan &ompl_parc::ArcPlannerBase::getPlan() const
 {
     static const MultiRobotPlan none;

@@ -93,6 +93,9 @@ namespace ompl_parc
         unsigned int getHorizon() const { return static_cast<unsigned int>(options_.horizon); }
         void setOptimistic(bool optimistic) { options_.optimistic = optimistic; }
         bool getOptimistic() const { return options_.optimistic; }
+        /** \brief Conflicts per worker a batch may hold (RepairLoopOptions::batchPerWorker); throws for 0. */
+        void setBatchPerWorker(unsigned int conflicts);
+        unsigned int getBatchPerWorker() const { return options_.batchPerWorker; }
         void setLocalOr(bool localOr) { options_.localOr = localOr; }
         bool getLocalOr() const { return options_.localOr; }
         /** @} */

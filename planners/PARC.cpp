@@ -8,6 +8,7 @@ ompl_parc::PARC::PARC(const ob::SpaceInformationPtr &si) : ArcPlannerBase(si, "P
     setHorizon(400);
     declareParam<unsigned int>("workers", this, &PARC::setWorkers, &PARC::getWorkers, "1:1:64");
     declareParam<unsigned int>("horizon", this, &PARC::setHorizon, &PARC::getHorizon, "1:50:2000");
+    declareParam<unsigned int>("batch_per_worker", this, &PARC::setBatchPerWorker, &PARC::getBatchPerWorker, "1:1:64");
     declareParam<bool>("optimistic", this, &PARC::setOptimistic, &PARC::getOptimistic, "0,1");
     declareParam<bool>("local_or", this, &PARC::setLocalOr, &PARC::getLocalOr, "0,1");
 }

@@ -26,21 +26,24 @@ namespace
     }
 }  // namespace
 
-class BatchDetection : public testing::TestWithParam<std::tuple<unsigned int, unsigned int, bool>>
+class BatchDetection : public testing::TestWithParam<std::tuple<unsigned int, unsigned int, unsigned int, bool>>
 {
 };
 
-/* For any W and H: the batch starts with the sequential earliest conflict, is robot-disjoint, holds only real
-   conflicts, and each accepted conflict meets the paper's definition (strict: nothing earlier shares a robot;
-   optimistic: every earlier conflict sharing a robot has its other robot in an earlier accepted conflict). */
+/* For any W, batch capacity (conflicts per worker) and H: the batch starts with the sequential earliest conflict, is
+   robot-disjoint, holds only real conflicts, and each accepted conflict meets the paper's definition (strict: nothing
+   earlier shares a robot; optimistic: every earlier conflict sharing a robot has its other robot in an earlier accepted
+   conflict). */
 TEST_P(BatchDetection, MatchesTheSequentialScanAndTheDefinitions)
 {
-    const auto [workers, horizon, optimistic] = GetParam();
+    const auto [workers, perWorker, horizon, optimistic] = GetParam();
+    const std::size_t capacity = std::size_t{workers} * perWorker;
     const auto problem = scenarios::createMobileCircle(8);
     const auto &si = *problem.getSpaceInformation();
     WorkerPool pool(workers);
     std::mt19937 rng(21);
     int batches = 0;
+    std::size_t largest = 0;
     for (int k = 0; k < 20; ++k)
     {
         const auto plan = test::randomWalkPlan(si, rng, 0.04);
@@ -54,14 +57,15 @@ TEST_P(BatchDetection, MatchesTheSequentialScanAndTheDefinitions)
         }
         const auto all = test::allConflicts(si, plan);
         ConflictDetector detector(si);
-        const auto detected = BatchDetector(detector, pool, horizon, optimistic)
+        const auto detected = BatchDetector(detector, pool, horizon, capacity, optimistic)
                                   .detect(plan, cache, 200, ob::plannerNonTerminatingCondition());
         const auto &batch = detected.entries;
         ASSERT_EQ(batch.empty(), all.empty());
         if (batch.empty())
             continue;
         ++batches;
-        EXPECT_LE(batch.size(), workers);
+        EXPECT_LE(batch.size(), capacity);
+        largest = std::max(largest, batch.size());
         EXPECT_EQ(batch.front().conflict, all.front());
         std::vector<int> used(8, 0);
         for (const auto &entry : batch)
@@ -97,11 +101,13 @@ TEST_P(BatchDetection, MatchesTheSequentialScanAndTheDefinitions)
                     << "pair (" << c.first << ", " << c.second << ") passed its conflict at " << c.timestep;
         };
         sound();
-        BatchDetector(detector, pool, horizon, optimistic)
+        BatchDetector(detector, pool, horizon, capacity, optimistic)
             .detect(plan, cache, 200, ob::plannerNonTerminatingCondition());
         sound();
     }
     EXPECT_GT(batches, 5);
+    if (capacity > 1)
+        EXPECT_GE(largest, 2u) << "no batch held more than one conflict";
 }
 
 /* One detector kept across calls, as the repair loop keeps it: pairs found conflict-free to their end leave the
@@ -118,7 +124,7 @@ TEST(BatchDetection, SettledPairsAreScannedAgainAfterAnInvalidation)
     {
         auto plan = test::randomWalkPlan(si, rng, 0.04);
         ConflictDetector detector(si);
-        BatchDetector batches(detector, pool, 50, true);
+        BatchDetector batches(detector, pool, 50, 2, true);
         const RepairCache cache;
         batches.detect(plan, cache, 200, ob::plannerNonTerminatingCondition());
         const std::size_t a = robot(rng), b = (a + 1 + robot(rng) % 7) % 8;
@@ -134,13 +140,14 @@ TEST(BatchDetection, SettledPairsAreScannedAgainAfterAnInvalidation)
 }
 
 INSTANTIATE_TEST_SUITE_P(WorkersHorizons, BatchDetection,
-                         testing::Combine(testing::Values(1u, 2u, 3u, 4u), testing::Values(1u, 7u, 50u, 400u),
-                                          testing::Bool()),
+                         testing::Combine(testing::Values(1u, 2u, 3u, 4u), testing::Values(1u, 4u),
+                                          testing::Values(1u, 7u, 50u, 400u), testing::Bool()),
                          [](const auto &info)
                          {
-                             return "W" + std::to_string(std::get<0>(info.param)) + "_H" +
-                                    std::to_string(std::get<1>(info.param)) +
-                                    (std::get<2>(info.param) ? "_optimistic" : "_strict");
+                             return "W" + std::to_string(std::get<0>(info.param)) + "_B" +
+                                    std::to_string(std::get<1>(info.param)) + "_H" +
+                                    std::to_string(std::get<2>(info.param)) +
+                                    (std::get<3>(info.param) ? "_optimistic" : "_strict");
                          });
 
 TEST(Parc, OneWorkerComputesWhatArcComputes)
@@ -193,7 +200,7 @@ TEST_P(ParcSolves, AndTheIndependentValidatorAgrees)
     EXPECT_TRUE(report.valid) << report.message;
     const auto &s = parc.getParallelStatistics();
     EXPECT_GT(s.batches, 0u);
-    EXPECT_LE(s.firstBatchSize, workers);
+    EXPECT_LE(s.firstBatchSize, workers * parc.getBatchPerWorker());
     EXPECT_GT(s.projectedInitial + s.projectedDetection + s.projectedResolution, 0.);
 }
 

@@ -8,16 +8,19 @@
 #include <algorithm>
 
 ompl_parc::BatchDetector::BatchDetector(ConflictDetector &detector, WorkerPool &pool, std::size_t horizon,
-                                        bool optimistic)
+                                        std::size_t capacity, bool optimistic)
     : detector_(detector),
       pool_(pool),
       horizon_(horizon),
+      capacity_(capacity),
       optimistic_(optimistic),
       live_(pool.getWorkerCount()),
       isLive_(detector.getPairCount(), 1)
 {
     if (horizon == 0)
         throw ompl::Exception("BatchDetector", "the horizon must be at least 1 timestep");
+    if (capacity == 0)
+        throw ompl::Exception("BatchDetector", "a batch must hold at least one conflict");
     for (std::size_t p = 0; p < detector_.getPairCount(); ++p)
         live_[p % live_.size()].push_back(p);  // round-robin, as in the paper
 }
@@ -42,9 +45,9 @@ ompl_parc::DetectedBatch ompl_parc::BatchDetector::detect(const MultiRobotPlan &
                                                           std::size_t window,
                                                           const ompl::base::PlannerTerminationCondition &ptc)
 {
-    ConflictBatch batch(optimistic_, live_.size(), plan.getRobotCount());
+    ConflictBatch batch(optimistic_, capacity_, plan.getRobotCount());
     // A batch of one is the earliest conflict: scans may stop at the first timestep with one.
-    const bool earliestOnly = live_.size() == 1;
+    const bool earliestOnly = capacity_ == 1;
     double projected = 0.;
     const auto skip = [&batch](std::size_t i, std::size_t j) { return batch.skipPair(i, j); };
     const std::size_t makespan = plan.getMakespan();

@@ -25,18 +25,21 @@ namespace ompl_parc
         pairs over the next H timesteps (the synchronisation horizon) for each pair's first conflict, skipping
         pairs the batch no longer needs; the coordinator then merges the candidates in temporal order, grows
         each into its robot set through the repair cache and offers it to the ConflictBatch, until the batch
-        holds W conflicts or the plan ends. Workers scan only the pairs still in play (not known conflict-free to
-        their end since their robots last changed). A round starts at the first timestep after the previous round's
-        window that some pair still needs checked, so stretches known to be clear (disc pairs are scanned
-        ahead from the plan's pieces) cost no rounds. The frontiers of the shared ConflictDetector carry over between
-        calls. With W = 1 the batch is exactly the sequential earliest conflict (ARC's detection: its scans stop
-        at the first timestep with a conflict), and robot-set growth happens here for ARC and P-ARC alike. */
+        is full (W conflicts in the paper, RepairLoopOptions::batchPerWorker x W here) or the plan ends. Workers
+        scan only the pairs still in play (not known conflict-free to their end since their robots last changed).
+        A round starts at the first timestep after the previous round's window that some pair still needs
+        checked, so stretches known to be clear (disc pairs are scanned ahead from the plan's pieces) cost no
+        rounds. The frontiers of the shared ConflictDetector carry over between calls. With a capacity of one (W =
+        1) the batch is exactly the sequential earliest conflict (ARC's detection: its scans stop at the first
+        timestep with a conflict), and robot-set growth happens here for ARC and P-ARC alike. */
     class BatchDetector
     {
       public:
         /** \brief \e horizon H (timesteps scanned per round; UNBOUNDED: the whole plan in one round, as ARC
-            does); throws ompl::Exception for 0. */
-        BatchDetector(ConflictDetector &detector, WorkerPool &pool, std::size_t horizon, bool optimistic);
+            does); a batch is full at \e capacity conflicts (the paper's W; 1: the earliest conflict alone, and
+            scans stop at the first timestep with one). Throws ompl::Exception for a zero horizon or capacity. */
+        BatchDetector(ConflictDetector &detector, WorkerPool &pool, std::size_t horizon, std::size_t capacity,
+                      bool optimistic);
 
         static constexpr std::size_t UNBOUNDED = std::numeric_limits<std::size_t>::max() / 2;
 
@@ -52,7 +55,7 @@ namespace ompl_parc
       private:
         ConflictDetector &detector_;
         WorkerPool &pool_;
-        std::size_t horizon_;
+        std::size_t horizon_, capacity_;
         bool optimistic_;
         /** \brief Per worker, its pairs (round-robin: pair p is worker p mod W's) that are not settled: a pair known
             to be conflict-free to its end leaves the list at the end of a detect() call, and comes back when one of

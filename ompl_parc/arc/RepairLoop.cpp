@@ -58,7 +58,10 @@ void ompl_parc::RepairLoop::configure(RepairLoopOptions options)
         pool_ = std::make_unique<WorkerPool>(options.workers);
     resolver_ =
         std::make_unique<ConflictResolver>(*problem_.getSpaceInformation(), options.settings, options.hierarchy);
-    batchDetector_ = std::make_unique<BatchDetector>(detector_, *pool_, options.horizon, options.optimistic);
+    if (options.batchPerWorker == 0)
+        throw ompl::Exception("RepairLoop", "a batch must hold at least one conflict per worker");
+    const std::size_t capacity = options.workers == 1 ? 1 : std::size_t{options.workers} * options.batchPerWorker;
+    batchDetector_ = std::make_unique<BatchDetector>(detector_, *pool_, options.horizon, capacity, options.optimistic);
     options_ = std::move(options);
 }
 

@@ -31,6 +31,10 @@ namespace ompl_parc
         unsigned int workers{1};
         /** \brief Sync horizon H of P-ARC's detection rounds; BatchDetector::UNBOUNDED scans the whole plan. */
         std::size_t horizon{BatchDetector::UNBOUNDED};
+        /** \brief Conflicts a batch may hold per worker (the paper's batch holds W: 1; default 8). With more, a batch's
+            repairs are handed out as workers free up, so one slow repair no longer idles the other workers
+            until the next batch. W = 1 keeps batches of one (ARC's earliest conflict). */
+        unsigned int batchPerWorker{8};
         /** \brief Optimistic (true) or strict batch independence; local OR multi-start of idle workers. */
         bool optimistic{true}, localOr{true};
         /** \brief Where the stages report their progress as they go (the planner's; none if null). */

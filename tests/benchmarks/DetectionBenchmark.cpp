@@ -6,9 +6,9 @@
    reports the mean per call: wall time (manual time), the process CPU time of all threads, and the projected
    W-core time (largest per-worker CPU per round plus the coordinator; a projection when W exceeds the cores).
    Rows: W = 1, 2 (and 16, oversubscribed on small machines) at H = 200, and a horizon sweep at W = 2. A call
-   with more workers returns a larger batch (up to W conflicts), so the table at the end gives, side by side in
-   this run, the wall time per call and per conflict found, against W = 1.
-   Usage: ompl_parc_bench_detection [--benchmark_filter=REGEX] */
+   with more workers returns a larger batch (up to W conflicts, as in the paper), so the table at the end gives, side by
+   side in this run, the wall time per call and per conflict found, against W = 1. Usage: ompl_parc_bench_detection
+   [--benchmark_filter=REGEX] */
 #include "ompl_parc/arc/BatchDetector.h"
 #include "ompl_parc/arc/InitialPlanner.h"
 #include "ompl_parc/scenarios/PandaCage.h"
@@ -94,7 +94,7 @@ namespace
             for (const PlanSet &set : sets)
             {
                 ConflictDetector detector(*set.problem.getSpaceInformation());
-                BatchDetector batches(detector, pool, horizon, true);
+                BatchDetector batches(detector, pool, horizon, workers, true);  // the paper's batch: up to W
                 const double cpuStart = processCpuSeconds();
                 const auto start = ompl::time::now();
                 const auto detected = batches.detect(set.plan, cache, window, ob::plannerNonTerminatingCondition());
