@@ -236,8 +236,30 @@ TEST(Parc, BadWorkerAndHorizonSettingsAreClearErrors)
     EXPECT_THROW(parc.setWorkers(0), ompl::Exception);
     EXPECT_THROW(parc.setHorizon(0), ompl::Exception);
     EXPECT_THROW(parc.params().setParam("workers", "0"), ompl::Exception);  // OMPL passes setter errors on
-    for (const char *name : {"workers", "horizon", "optimistic", "local_or", "window", "seed"})
+    EXPECT_THROW(parc.params().setParam("batch_per_worker", "0"), ompl::Exception);
+    for (const char *name : {"workers", "horizon", "batch_per_worker", "optimistic", "local_or", "window", "seed"})
         EXPECT_TRUE(parc.params().hasParam(name)) << name;
+}
+
+/* A batch holds up to batch_per_worker x W conflicts (8 by default), and W with batch_per_worker = 1, the paper's
+   batch: Mobile Cross 32 has many robot-disjoint conflicts around its middle, so the default's first batch holds more
+   than W. */
+TEST(Parc, BatchesHoldUpToBatchPerWorkerTimesWConflicts)
+{
+    const auto problem = scenarios::createMobileCross(32);
+    for (unsigned int perWorker : {8u, 1u})
+    {
+        PARC parc(problem.getSpaceInformation());
+        parc.setWorkers(2);
+        parc.setBatchPerWorker(perWorker);
+        parc.setSeed(3);
+        ASSERT_EQ(test::solveWith(parc, problem), ob::PlannerStatus::EXACT_SOLUTION) << parc.getStatusMessage();
+        EXPECT_TRUE(SolutionValidator(problem).validate(parc.getPlan()).valid);
+        const auto &s = parc.getParallelStatistics();
+        EXPECT_LE(s.firstBatchSize, 2 * perWorker);
+        if (perWorker > 1)
+            EXPECT_GT(s.firstBatchSize, 2u);
+    }
 }
 
 class OrParcSolves : public testing::TestWithParam<std::tuple<std::string, std::size_t, unsigned int, unsigned int>>

@@ -30,7 +30,8 @@ namespace ompl_parc
     class ConflictBatch
     {
       public:
-        /** \brief \e capacity: the batch is full at this many conflicts (W); \e robots: team size. */
+        /** \brief \e capacity: the batch is full at this many conflicts (W in the paper; W x batch_per_worker in
+            P-ARC, 1 for ARC); \e robots: team size. */
         ConflictBatch(bool optimistic, std::size_t capacity, std::size_t robots);
 
         /** \brief Offer the next conflict in temporal order with its robot set; true if accepted. */

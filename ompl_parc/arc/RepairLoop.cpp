@@ -54,12 +54,12 @@ void ompl_parc::RepairLoop::configure(RepairLoopOptions options)
         throw ompl::Exception("RepairLoop", "workers must be at least 1");
     if (options.horizon == 0)
         throw ompl::Exception("RepairLoop", "the horizon must be at least 1 timestep");
+    if (options.batchPerWorker == 0)
+        throw ompl::Exception("RepairLoop", "a batch must hold at least one conflict per worker");
     if (!pool_ || pool_->getWorkerCount() != options.workers)
         pool_ = std::make_unique<WorkerPool>(options.workers);
     resolver_ =
         std::make_unique<ConflictResolver>(*problem_.getSpaceInformation(), options.settings, options.hierarchy);
-    if (options.batchPerWorker == 0)
-        throw ompl::Exception("RepairLoop", "a batch must hold at least one conflict per worker");
     const std::size_t capacity = options.workers == 1 ? 1 : std::size_t{options.workers} * options.batchPerWorker;
     batchDetector_ = std::make_unique<BatchDetector>(detector_, *pool_, options.horizon, capacity, options.optimistic);
     options_ = std::move(options);

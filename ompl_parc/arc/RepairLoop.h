@@ -60,7 +60,7 @@ namespace ompl_parc
         ~RepairLoop();
 
         /** \brief Use \e options from the next stage on; keeps the plan, frontiers, cache and statistics. Throws
-            ompl::Exception for 0 workers or horizon, or an empty hierarchy. */
+            ompl::Exception for 0 workers, horizon or conflicts per worker, or an empty hierarchy. */
         void configure(RepairLoopOptions options);
 
         /** \brief Plan the robots that have no path yet; false if \e ptc fired first (resume later). */

@@ -26,6 +26,23 @@ namespace
 #endif
         return std::max(1u, std::thread::hardware_concurrency());
     }
+
+#ifdef __linux__
+    /** Let the kernel move the calling thread off \e core to another core of \e allowed (its own mask), then give
+        it back \e allowed; false if the mask could not be given back (the thread then stays restricted and must not
+        try again). Staying put when there is nowhere to go is not a failure. */
+    bool leaveCore(int core, const cpu_set_t &allowed)
+    {
+        cpu_set_t others = allowed;
+        CPU_CLR(core, &others);
+        if (CPU_COUNT(&others) == 0 || pthread_setaffinity_np(pthread_self(), sizeof(others), &others) != 0)
+            return true;
+        for (int attempt = 0; attempt < 3; ++attempt)
+            if (pthread_setaffinity_np(pthread_self(), sizeof(allowed), &allowed) == 0)
+                return true;
+        return false;
+    }
+#endif
 }  // namespace
 
 ompl_parc::WorkerPool::WorkerPool(unsigned int workers) : workers_(workers), spin_(workers <= usableCores())
@@ -34,11 +51,24 @@ ompl_parc::WorkerPool::WorkerPool(unsigned int workers) : workers_(workers), spi
         throw ompl::Exception("WorkerPool", "needs at least one worker");
     cpu_.assign(workers, 0.);
     threads_.reserve(workers - 1);
-    for (unsigned int w = 1; w < workers; ++w)
-        threads_.emplace_back([this, w] { serve(w); });
+    try
+    {
+        for (unsigned int w = 1; w < workers; ++w)
+            threads_.emplace_back([this, w] { serve(w); });
+    }
+    catch (...)  // a thread could not start: stop the ones that did before the error leaves
+    {
+        close();
+        throw;
+    }
 }
 
 ompl_parc::WorkerPool::~WorkerPool()
+{
+    close();
+}
+
+void ompl_parc::WorkerPool::close()
 {
     {
         const std::lock_guard<std::mutex> lock(mutex_);
@@ -74,6 +104,10 @@ void ompl_parc::WorkerPool::serve(unsigned int worker)
 {
     unsigned long seen = 0;
     bool spin = false;  // a new thread sleeps until the first stage: it may share the caller's core
+#ifdef __linux__
+    cpu_set_t allowed;
+    bool moving = spin_ && pthread_getaffinity_np(pthread_self(), sizeof(allowed), &allowed) == 0;
+#endif
     while (true)
     {
         const auto ready = [&] { return closing_.load() || generation_.load() != seen; };
@@ -83,33 +117,16 @@ void ompl_parc::WorkerPool::serve(unsigned int worker)
         if (closing_)
             return;
         spin = true;
-        leaveCallerCore();
+#ifdef __linux__
+        if (const int core = callerCore_.load(); moving && core >= 0 && sched_getcpu() == core)
+            moving = leaveCore(core, allowed);
+#endif
         seen = generation_.load();
         runBody(worker);
         const std::lock_guard<std::mutex> lock(mutex_);
         if (--running_ == 0)
             stageDone_.notify_one();
     }
-}
-
-void ompl_parc::WorkerPool::leaveCallerCore() const
-{
-#ifdef __linux__
-    const int core = sched_getcpu();
-    if (core < 0 || core != callerCore_.load())
-        return;
-    cpu_set_t allowed;
-    if (pthread_getaffinity_np(pthread_self(), sizeof(allowed), &allowed) != 0)
-        return;
-    cpu_set_t others = allowed;
-    CPU_CLR(core, &others);
-    if (CPU_COUNT(&others) == 0)
-        return;
-    // Leaving the mask moves this thread to another allowed core at once; the original mask is restored right
-    // after, and the thread stays where it now is until it next sleeps.
-    if (pthread_setaffinity_np(pthread_self(), sizeof(others), &others) == 0)
-        pthread_setaffinity_np(pthread_self(), sizeof(allowed), &allowed);
-#endif
 }
 
 void ompl_parc::WorkerPool::runBody(unsigned int worker)
@@ -132,7 +149,8 @@ void ompl_parc::WorkerPool::runBody(unsigned int worker)
 std::vector<double> ompl_parc::WorkerPool::run(const std::function<void(unsigned int)> &body)
 {
 #ifdef __linux__
-    callerCore_ = sched_getcpu();
+    if (workers_ > 1 && spin_)
+        callerCore_ = sched_getcpu();
 #endif
     aborted_ = false;
     error_ = nullptr;

@@ -15,8 +15,8 @@ namespace ompl_parc
 
         run() starts the same body once per worker (with its index), waits until every worker has returned, and
         reports each worker's thread CPU time over the stage. If a body throws, the others are told to stop through
-        aborted() and the first exception is rethrown after all have joined: no thread outlives a stage, none is
-        left waiting. The calling thread is worker 0; W - 1 threads live as long as the pool (a pool of one worker
+        aborted() and the first exception is rethrown after all have joined: no body outlives its stage, no thread
+        is left waiting. The calling thread is worker 0; W - 1 threads live as long as the pool (a pool of one worker
         runs its stages on the calling thread: ARC is the one-worker case).
 
         Why not a general thread pool (the Boost.Asio pool this replaced): P-ARC's stages are short (a conflict
@@ -29,8 +29,10 @@ namespace ompl_parc
           end the same way; nobody spins when the workers outnumber the usable cores;
         - a new thread sleeps until its first stage (spinning then could hold the caller's core);
         - after waking the pool the caller yields once, and a pool thread that runs on the caller's core moves
-          to another one (leaveCallerCore()).
-        Between planner runs every worker sleeps. */
+          to another one (the kernel picks it: the thread leaves that core's bit in its affinity mask for a
+          moment, then restores the mask it started with; Linux only).
+        Nobody spins or moves in a pool with more workers than usable cores. That rule is per pool: several pools
+        in one process (OR-P-ARC's K instances) each decide alone. Between planner runs every worker sleeps. */
     class WorkerPool
     {
       public:
@@ -54,13 +56,11 @@ namespace ompl_parc
         static constexpr double SPIN_SECONDS = 2e-3;
 
       private:
-        /** \brief Pool thread \e worker (1..W-1): wait for a stage, run it, repeat until the pool is destroyed. */
+        /** \brief Pool thread \e worker (1..W-1): wait for a stage, run it, repeat until the pool is closed. */
         void serve(unsigned int worker);
 
-        /** \brief If this pool thread woke on the core the caller runs on (the scheduler may place a woken thread
-            there, and then two workers share one core for milliseconds while another idles), move to another core
-            the thread may use. Linux only; elsewhere nothing. */
-        void leaveCallerCore() const;
+        /** \brief Tell the pool threads to end, and join them. */
+        void close();
 
         /** \brief Run the current stage's body as \e worker, recording its CPU time and the first error. */
         void runBody(unsigned int worker);
@@ -90,7 +90,7 @@ namespace ompl_parc
         const std::function<void(unsigned int)> *body_{nullptr};
         std::exception_ptr error_;
         std::vector<double> cpu_;
-        /** \brief The core the caller started the current stage on (-1: unknown). */
+        /** \brief The core the caller started the current stage on (-1: unknown, or nobody moves). */
         std::atomic<int> callerCore_{-1};
     };
 }  // namespace ompl_parc
