@@ -163,7 +163,7 @@ std::vector<double> ompl_parc::WorkerPool::run(const std::function<void(unsigned
             ++generation_;
         }
         stageStarted_.notify_all();
-        // A worker woken onto this core runs now (and moves off it, see leaveCallerCore) instead of after our slice.
+        // A worker woken onto this core runs now (and moves off it, see serve()) instead of after our slice.
         std::this_thread::yield();
     }
     runBody(0);
