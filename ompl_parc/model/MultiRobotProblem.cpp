@@ -1,7 +1,5 @@
 #include "ompl_parc/model/MultiRobotProblem.h"
 
-#include "ompl_parc/collision/CapsuleCollision.h"
-
 #include <ompl/base/ScopedState.h>
 #include <ompl/util/Exception.h>
 
@@ -36,22 +34,10 @@ ompl_parc::MultiRobotProblem::MultiRobotProblem(MultiRobotSpaceInformationPtr si
 std::string ompl_parc::MultiRobotProblem::checkConfigurations(const std::vector<std::vector<double>> &configs,
                                                               const std::string &what) const
 {
-    for (std::size_t i = 0; i < configs.size(); ++i)
-    {
-        const auto validity = si_->getRobot(i)->checkValidity(configs[i].data());
-        if (validity != Robot::Validity::VALID)
-            return what + " of robot '" + si_->getRobot(i)->getName() + "' is " + Robot::toString(validity);
-    }
-    // Each robot's body once, then every pair (robotsCollide() would build both bodies for each of the n^2 / 2).
-    std::vector<CollisionBody> bodies(configs.size());
-    for (std::size_t i = 0; i < configs.size(); ++i)
-        si_->getRobot(i)->computeBody(configs[i].data(), bodies[i]);
-    for (std::size_t i = 0; i < configs.size(); ++i)
-        for (std::size_t j = i + 1; j < configs.size(); ++j)
-            if (bodiesCollide(bodies[i], bodies[j]))
-                return what + "s of robots '" + si_->getRobot(i)->getName() + "' and '" + si_->getRobot(j)->getName() +
-                       "' collide";
-    return "";
+    std::vector<const double *> values;
+    for (const auto &config : configs)
+        values.push_back(config.data());
+    return si_->explainInvalid(values, what);
 }
 
 std::string ompl_parc::MultiRobotProblem::checkEndpoints() const

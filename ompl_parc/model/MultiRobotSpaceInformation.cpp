@@ -3,8 +3,8 @@
 #include "ompl_parc/collision/CapsuleCollision.h"
 #include "ompl_parc/model/MultiRobotValidityChecker.h"
 #include "ompl_parc/robots/RakeMotionValidator.h"
-#include "ompl_parc/util/SeededRealVectorSampler.h"
 #include "ompl_parc/statespaces/SpaceRegistryLock.h"
+#include "ompl_parc/util/SeededRealVectorSampler.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/util/Exception.h>
@@ -111,16 +111,33 @@ bool ompl_parc::MultiRobotSpaceInformation::robotsCollide(std::size_t i, const d
 
 std::string ompl_parc::MultiRobotSpaceInformation::explainInvalid(const ob::State *state) const
 {
+    std::vector<const double *> configs(robots_.size());
+    for (std::size_t i = 0; i < robots_.size(); ++i)
+        configs[i] = getRobotValues(state, i);
+    return explainInvalid(configs);
+}
+
+std::string ompl_parc::MultiRobotSpaceInformation::explainInvalid(const std::vector<const double *> &configs,
+                                                                  const std::string &what) const
+{
+    if (configs.size() != robots_.size())
+        throw ompl::Exception("MultiRobotSpaceInformation", std::to_string(configs.size()) + " configurations for " +
+                                                                std::to_string(robots_.size()) + " robots");
+    const std::string one = what.empty() ? "robot '" : what + " of robot '";
+    const std::string two = what.empty() ? "robots '" : what + "s of robots '";
     for (std::size_t i = 0; i < robots_.size(); ++i)
     {
-        const auto validity = robots_[i]->checkValidity(getRobotValues(state, i));
+        const auto validity = robots_[i]->checkValidity(configs[i]);
         if (validity != Robot::Validity::VALID)
-            return "robot '" + robots_[i]->getName() + "' is " + Robot::toString(validity);
+            return one + robots_[i]->getName() + "' is " + Robot::toString(validity);
     }
+    std::vector<CollisionBody> bodies(robots_.size());
+    for (std::size_t i = 0; i < robots_.size(); ++i)
+        robots_[i]->computeBody(configs[i], bodies[i]);
     for (std::size_t i = 0; i < robots_.size(); ++i)
         for (std::size_t j = i + 1; j < robots_.size(); ++j)
-            if (robotsCollide(i, getRobotValues(state, i), j, getRobotValues(state, j)))
-                return "robots '" + robots_[i]->getName() + "' and '" + robots_[j]->getName() + "' collide";
+            if (bodiesCollide(bodies[i], bodies[j]))
+                return two + robots_[i]->getName() + "' and '" + robots_[j]->getName() + "' collide";
     return "";
 }
 

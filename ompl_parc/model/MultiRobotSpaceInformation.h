@@ -64,6 +64,13 @@ namespace ompl_parc
         /** \brief Empty if \e state is valid; otherwise the first reason, naming the robot(s). */
         std::string explainInvalid(const ompl::base::State *state) const;
 
+        /** \brief Empty if the team is valid at \e configs (robot i's configuration values at configs[i]); otherwise
+            the first reason: the first robot invalid alone ("robot 'a' is in collision"), else the first pair that
+            touches ("robots 'a' and 'b' collide"). A non-empty \e what names the configurations: "start of robot
+            'a' ...", "starts of robots 'a' and 'b' collide". Each robot's body is built once for all its pairs. Throws
+            ompl::Exception unless there is one configuration per robot. */
+        std::string explainInvalid(const std::vector<const double *> &configs, const std::string &what = "") const;
+
         /** \brief Down-cast \e si, or throw ompl::Exception saying that \e who needs a multi-robot
             SpaceInformation. */
         static MultiRobotSpaceInformationPtr get(const ompl::base::SpaceInformationPtr &si, const std::string &who);

@@ -3,8 +3,8 @@
 #include "ompl_parc/planners/STRRTstar.h"
 #include "ompl_parc/spacetime/SpaceTimeMotionValidator.h"
 #include "ompl_parc/spacetime/SpaceTimeStateSpace.h"
-#include "ompl_parc/util/SeededRealVectorSampler.h"
 #include "ompl_parc/statespaces/SpaceRegistryLock.h"
+#include "ompl_parc/util/SeededRealVectorSampler.h"
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
