@@ -5,6 +5,7 @@
 #include <fcl/narrowphase/distance.h>
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <random>
 
 using namespace ompl_parc;
@@ -158,6 +159,57 @@ TEST(CapsuleCollision, BoundingSphereLevelsNeverChangeTheAnswer)
     }
     EXPECT_GT(collisions, bodies / 10);  // both answers are well represented
     EXPECT_LT(collisions, bodies - bodies / 10);
+}
+
+TEST(CapsuleCollision, SinglePrecisionBoxesNeverDropAPairTheExactTestFlags)
+{
+    // The broad phase rules capsule pairs out by single-precision boxes; they are rounded outwards, so every pair
+    // whose double-precision test says "collide" must still reach that test. Stress the rounding: bodies far from
+    // the origin (up to 1e7, where a float's spacing is 1), capsule pairs placed within 1e-9 of contact on either
+    // side, bodies past the 64-capsule chunks, single spheres against bodies, and coordinates beyond the float range.
+    // The answer must equal the all-pairs double test exactly (no tolerance band).
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> u(-1., 1.), r(0.005, 0.05), gap(-1e-9, 1e-9);
+    std::uniform_int_distribution<int> count(1, 150);
+    int collisions = 0;
+    const double offsets[] = {0., 1e3, 1e7, -3e5, 1e39};
+    for (int k = 0; k < 2500; ++k)
+    {
+        const double offset = offsets[k % 5];
+        CollisionBody a, b;
+        const int n = count(rng);
+        const double spread = 1. + n / 4.;  // sparse enough that the near contact below often decides
+        for (CollisionBody *body : {&a, &b})
+            for (int c = body == &a ? n : count(rng); c > 0; --c)
+            {
+                const double x = spread * u(rng) + offset, y = spread * u(rng) - offset, z = u(rng);
+                body->addCapsule(x, y, z, x + 0.4 * u(rng), y + 0.4 * u(rng), z + 0.4 * u(rng), r(rng));
+            }
+        if (k % 3 == 0)  // every third pair: a single sphere (a disc's body, which keeps no boxes) against a body
+        {
+            a.clear();
+            a.addSphere(b.ax_[0] + u(rng), b.ay_[0] + u(rng), b.az_[0] + u(rng), r(rng));
+        }
+        // One capsule of b moved so that its axis is rr (1 + gap) from the first capsule's of a: a near contact.
+        const std::size_t j = b.size() - 1;
+        const double dx = u(rng), dy = u(rng), dz = u(rng), norm = std::sqrt(dx * dx + dy * dy + dz * dz);
+        const double reach = (a.radius_[0] + b.radius_[j]) * (1. + gap(rng)) / norm;
+        b.ax_[j] = b.bx_[j] = a.ax_[0] + dx * reach;
+        b.ay_[j] = b.by_[j] = a.ay_[0] + dy * reach;
+        b.az_[j] = b.bz_[j] = a.az_[0] + dz * reach;
+        a.updateBound();
+        b.updateBound();
+        bool pairwise = false;
+        for (std::size_t i = 0; i < a.size() && !pairwise; ++i)
+            for (std::size_t m = 0; m < b.size() && !pairwise; ++m)
+                pairwise = capsulesCollide(a, i, b, m);
+        EXPECT_EQ(bodiesCollide(a, b), pairwise) << "body pair " << k << " at offset " << offset;
+        EXPECT_EQ(bodiesCollide(b, a), pairwise) << "body pair " << k << " (swapped)";
+        collisions += pairwise && offset < 1e38 ? 1 : 0;  // at 1e39 every capsule is the same point: all collide
+    }
+    EXPECT_GT(collisions, 400);  // both answers are well represented among the 2000 pairs at finite offsets
+    EXPECT_LT(collisions, 1600);
+    std::printf("[ info ] %d of 2000 body pairs collide\n", collisions);
 }
 
 TEST(CapsuleCollision, SegmentDistanceMatchesFclDistance)

@@ -42,6 +42,7 @@ void ompl_parc::BodyTrack::load(std::size_t t, CollisionBody &out) const
     out.centerY_ = centerY_[t];
     out.centerZ_ = centerZ_[t];
     out.boundRadius_ = boundRadius_[t];
+    out.updateBoxes();
 }
 
 bool ompl_parc::BodyTrack::collides(std::size_t t, const CollisionBody &body, CollisionBody &scratch) const

@@ -12,7 +12,7 @@ namespace ompl_parc
         buffer instead of a CollisionBody (eleven heap arrays) per timestep. Planning around a robot's timed path
         (DynamicObstacles) keeps its bodies for thousands of timesteps, and allocating and freeing them one by one
         cost more than the checks that use them. A body is loaded back into a caller's scratch CollisionBody, bit
-        for bit the body appended (bounding spheres included). */
+        for bit the body appended (bounding spheres and boxes included: the boxes are recomputed, not stored). */
     class BodyTrack
     {
       public:

@@ -16,11 +16,11 @@ namespace ompl_parc
 
     /** \brief True if any capsule of \e a overlaps any capsule of \e b.
 
-        This is the robot-robot test on the hot path of conflict detection. Two levels of bounding spheres
-        come before any exact test: the bodies' spheres, then each capsule's sphere against the other body's
-        (those that reach it are gathered into small local arrays); per gathered capsule of \e a, one
-        vectorised pass of sphere-sphere clearances over the gathered ones of \e b, and the exact segment
-        distance only where two capsule spheres overlap. The answer is exactly that of testing all pairs. */
+        This is the robot-robot test on the hot path of conflict detection. The bodies' bounding spheres come first;
+        then, a SIMD vector of capsules per instruction, the capsules of each body whose boxes overlap the other
+        body's box (CollisionBody::boxes_, single precision rounded outwards: never tighter than the capsule); per
+        pair of those, their boxes, and the exact segment distance in double precision only where the two boxes
+        overlap. The boxes only rule pairs out that cannot touch, so the answer is that of testing every pair. */
     bool bodiesCollide(const CollisionBody &a, const CollisionBody &b);
 }  // namespace ompl_parc
 

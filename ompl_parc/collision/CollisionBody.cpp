@@ -1,7 +1,26 @@
 #include "ompl_parc/collision/CollisionBody.h"
 
+#include <xsimd/xsimd.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+namespace
+{
+    /** Single precision rounded outwards: below \e x (\e down) or above it. The conversion moves a value by at
+        most 2^-24 of it; the widening by 2^-20 of it (plus a normal float's worth, for values near zero) more than
+        covers that and the rounding of the widening itself, so the box always contains the double-precision
+        capsule, with room to spare for the exact test's own rounding. Values beyond +-1e38 are clamped first so
+        that the conversion cannot overflow to the wrong infinity. */
+    inline float roundedOut(double x, bool down)
+    {
+        const float f = static_cast<float>(std::min(std::max(x, -1e38), 1e38));
+        const float margin = std::fabs(f) * 0x1p-20f + 1e-30f;
+        return down ? (x < -1e38 ? -std::numeric_limits<float>::infinity() : f - margin)
+                    : (x > 1e38 ? std::numeric_limits<float>::infinity() : f + margin);
+    }
+}  // namespace
 
 void ompl_parc::CollisionBody::clear()
 {
@@ -38,6 +57,7 @@ void ompl_parc::CollisionBody::updateBound()
     if (n == 0)
     {
         centerX_ = centerY_ = centerZ_ = boundRadius_ = 0.;
+        updateBoxes();
         return;
     }
     if (n == 1 && spheresOnly_)  // a disc or a single sphere bounds itself (the common 2D case: keep it cheap)
@@ -46,6 +66,7 @@ void ompl_parc::CollisionBody::updateBound()
         sphereY_[0] = centerY_ = ay_[0];
         sphereZ_[0] = centerZ_ = az_[0];
         sphereRadius_[0] = boundRadius_ = radius_[0];
+        boxStride_ = 0;  // updateBoxes() for one sphere, without computing its box: the pair test does when needed
         return;
     }
     // Restricted plain pointers: distinct vectors never alias, which the compiler cannot prove by itself
@@ -96,6 +117,55 @@ void ompl_parc::CollisionBody::updateBound()
     centerY_ = cy;
     centerZ_ = cz;
     boundRadius_ = radius;
+    updateBoxes();
+}
+
+void ompl_parc::CollisionBody::updateBoxes()
+{
+    if (isSingleSphere())
+    {
+        boxStride_ = 0;
+        return;
+    }
+    constexpr std::size_t lanes = xsimd::batch<float>::size;
+    const std::size_t n = size(), stride = (n + lanes - 1) / lanes * lanes;
+    boxStride_ = stride;
+    boxes_.resize(6 * stride);
+    const std::vector<double> *a[3] = {&ax_, &ay_, &az_}, *b[3] = {&bx_, &by_, &bz_};
+    constexpr float inf = std::numeric_limits<float>::infinity();
+    for (std::size_t d = 0; d < 3; ++d)
+    {
+        float *lo = boxes_.data() + d * stride, *hi = boxes_.data() + (3 + d) * stride;
+        const double *pa = a[d]->data(), *pb = b[d]->data(), *r = radius_.data();
+        float bodyLo = inf, bodyHi = -inf;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            lo[i] = roundedOut(std::min(pa[i], pb[i]) - r[i], true);
+            hi[i] = roundedOut(std::max(pa[i], pb[i]) + r[i], false);
+            bodyLo = std::min(bodyLo, lo[i]);
+            bodyHi = std::max(bodyHi, hi[i]);
+        }
+        std::fill(lo + n, lo + stride, inf);  // padding: empty boxes, never overlapping anything
+        std::fill(hi + n, hi + stride, -inf);
+        boxLo_[d] = bodyLo;
+        boxHi_[d] = bodyHi;
+    }
+}
+
+void ompl_parc::CollisionBody::getBox(std::array<float, 3> &lo, std::array<float, 3> &hi) const
+{
+    if (!isSingleSphere())
+    {
+        lo = boxLo_;
+        hi = boxHi_;
+        return;
+    }
+    const double center[3] = {ax_[0], ay_[0], az_[0]}, r = radius_[0];
+    for (std::size_t d = 0; d < 3; ++d)
+    {
+        lo[d] = roundedOut(center[d] - r, true);
+        hi[d] = roundedOut(center[d] + r, false);
+    }
 }
 
 void ompl_parc::CollisionBody::expandBox(std::array<double, 3> &lo, std::array<double, 3> &hi) const

@@ -40,20 +40,46 @@ namespace ompl_parc
             are unions of such boxes). */
         void expandBox(std::array<double, 3> &lo, std::array<double, 3> &hi) const;
 
-        /** \brief Recompute the bounding spheres (of the body and of each capsule); call after the last
-            addCapsule(). */
+        /** \brief Recompute the bounding spheres (of the body and of each capsule) and the boxes (updateBoxes());
+            call after the last addCapsule(). */
         void updateBound();
+
+        /** \brief Recompute the single-precision capsule boxes and the body's box from the capsules (updateBound()
+            does; a body whose arrays were copied in with their bounding spheres needs only this). A body of one
+            sphere keeps none (boxStride_ 0): two such bodies are decided by their bounding spheres alone, and discs
+            would pay for boxes at every state; getBox() gives its box when a pair test needs it. */
+        void updateBoxes();
+
+        /** \brief True for a body of exactly one sphere (a disc): it keeps no capsule boxes. */
+        bool isSingleSphere() const { return spheresOnly_ && size() == 1; }
+
+        /** \brief The body's box in single precision, rounded outwards: boxLo_ and boxHi_, or for a body of one sphere
+            (isSingleSphere(), which keeps none) the sphere's, computed here. */
+        void getBox(std::array<float, 3> &lo, std::array<float, 3> &hi) const;
 
         std::size_t size() const { return radius_.size(); }
 
-        /** \brief Capsule end points and radii, one array per coordinate. */
-        std::vector<double> ax_, ay_, az_, bx_, by_, bz_, radius_;
+        /** \brief Bounding sphere of all capsules. (The members the pair test reads first come first, so that they
+            share a cache line.) */
+        double centerX_{0.}, centerY_{0.}, centerZ_{0.}, boundRadius_{0.};
+
+        /** \brief The body's box: the union of its capsule boxes (single precision, rounded outwards like them); not
+            kept for a body of one sphere (read it with getBox()). */
+        std::array<float, 3> boxLo_{}, boxHi_{};
+
+        /** \brief Per capsule, its axis-aligned box (end points -/+ radius) in single precision, rounded outwards past
+            the conversion's error: six arrays (low x, y, z, high x, y, z) of boxStride_ floats each, boxStride_ being
+            size() rounded up to the library's SIMD width; the entries past size() are empty boxes. The robot-robot
+            test's broad phase (bodiesCollide()) reads only these, a vector of capsules per instruction, and the
+            double-precision arrays only for the capsule pairs whose boxes overlap. */
+        std::size_t boxStride_{0};
+        std::vector<float> boxes_;
 
         /** \brief True while every capsule is a sphere: the pair test then skips the segment math. */
         bool spheresOnly_{true};
 
-        /** \brief Bounding sphere of all capsules. */
-        double centerX_{0.}, centerY_{0.}, centerZ_{0.}, boundRadius_{0.};
+        /** \brief Capsule end points and radii, one array per coordinate. */
+        std::vector<double> ax_, ay_, az_, bx_, by_, bz_, radius_;
 
         /** \brief Bounding sphere of each capsule, one array per coordinate (set by updateBound()). */
         std::vector<double> sphereX_, sphereY_, sphereZ_, sphereRadius_;
