@@ -1,32 +1,19 @@
 #include "ompl_parc/collision/CollisionBody.h"
 
+#include "ompl_parc/collision/FloatBounds.h"
+
 #include <xsimd/xsimd.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace
-{
-    /** Single precision rounded outwards: below \e x (\e down) or above it. The conversion moves a value by at
-        most 2^-24 of it; the widening by 2^-20 of it (plus a normal float's worth, for values near zero) more than
-        covers that and the rounding of the widening itself, so the box always contains the double-precision
-        capsule, with room to spare for the exact test's own rounding. Values beyond +-1e38 are clamped first so
-        that the conversion cannot overflow to the wrong infinity. */
-    inline float roundedOut(double x, bool down)
-    {
-        const float f = static_cast<float>(std::min(std::max(x, -1e38), 1e38));
-        const float margin = std::fabs(f) * 0x1p-20f + 1e-30f;
-        return down ? (x < -1e38 ? -std::numeric_limits<float>::infinity() : f - margin)
-                    : (x > 1e38 ? std::numeric_limits<float>::infinity() : f + margin);
-    }
-}  // namespace
-
 void ompl_parc::CollisionBody::clear()
 {
     for (auto *v : {&ax_, &ay_, &az_, &bx_, &by_, &bz_, &radius_})
         v->clear();
     spheresOnly_ = true;
+    boxesCurrent_ = false;
 }
 
 void ompl_parc::CollisionBody::addCapsule(double ax, double ay, double az, double bx, double by, double bz,
@@ -40,6 +27,7 @@ void ompl_parc::CollisionBody::addCapsule(double ax, double ay, double az, doubl
     bz_.push_back(bz);
     radius_.push_back(radius);
     spheresOnly_ = spheresOnly_ && ax == bx && ay == by && az == bz;
+    boxesCurrent_ = false;
 }
 
 void ompl_parc::CollisionBody::resizeArrays(std::size_t n)
@@ -66,7 +54,8 @@ void ompl_parc::CollisionBody::updateBound()
         sphereY_[0] = centerY_ = ay_[0];
         sphereZ_[0] = centerZ_ = az_[0];
         sphereRadius_[0] = boundRadius_ = radius_[0];
-        boxStride_ = 0;  // updateBoxes() for one sphere, without computing its box: the pair test does when needed
+        boxStride_ = 0;  // updateBoxes() for one sphere, which keeps no boxes
+        boxesCurrent_ = true;
         return;
     }
     // Restricted plain pointers: distinct vectors never alias, which the compiler cannot prove by itself
@@ -122,6 +111,7 @@ void ompl_parc::CollisionBody::updateBound()
 
 void ompl_parc::CollisionBody::updateBoxes()
 {
+    boxesCurrent_ = true;
     if (isSingleSphere())
     {
         boxStride_ = 0;
@@ -137,11 +127,14 @@ void ompl_parc::CollisionBody::updateBoxes()
     {
         float *lo = boxes_.data() + d * stride, *hi = boxes_.data() + (3 + d) * stride;
         const double *pa = a[d]->data(), *pb = b[d]->data(), *r = radius_.data();
+        for (std::size_t i = 0; i < n; ++i)  // a map (vectorised), then the reductions
+        {
+            lo[i] = roundedDown(std::min(pa[i], pb[i]) - r[i]);
+            hi[i] = roundedUp(std::max(pa[i], pb[i]) + r[i]);
+        }
         float bodyLo = inf, bodyHi = -inf;
         for (std::size_t i = 0; i < n; ++i)
         {
-            lo[i] = roundedOut(std::min(pa[i], pb[i]) - r[i], true);
-            hi[i] = roundedOut(std::max(pa[i], pb[i]) + r[i], false);
             bodyLo = std::min(bodyLo, lo[i]);
             bodyHi = std::max(bodyHi, hi[i]);
         }
@@ -163,8 +156,8 @@ void ompl_parc::CollisionBody::getBox(std::array<float, 3> &lo, std::array<float
     const double center[3] = {ax_[0], ay_[0], az_[0]}, r = radius_[0];
     for (std::size_t d = 0; d < 3; ++d)
     {
-        lo[d] = roundedOut(center[d] - r, true);
-        hi[d] = roundedOut(center[d] + r, false);
+        lo[d] = roundedDown(center[d] - r);
+        hi[d] = roundedUp(center[d] + r);
     }
 }
 

@@ -29,6 +29,7 @@ namespace ompl_parc
         void resize(std::size_t n, bool spheresOnly)
         {
             spheresOnly_ = spheresOnly;
+            boxesCurrent_ = false;
             if (radius_.size() != n)  // inline and cheap when the size is unchanged: the case per timestep
                 resizeArrays(n);
         }
@@ -49,6 +50,9 @@ namespace ompl_parc
             sphere keeps none (boxStride_ 0): two such bodies are decided by their bounding spheres alone, and discs
             would pay for boxes at every state; getBox() gives its box when a pair test needs it. */
         void updateBoxes();
+
+        /** \brief True once updateBoxes() (or updateBound()) ran after the last clear(), addCapsule() or resize(). */
+        bool hasBoxes() const { return boxesCurrent_; }
 
         /** \brief True for a body of exactly one sphere (a disc): it keeps no capsule boxes. */
         bool isSingleSphere() const { return spheresOnly_ && size() == 1; }
@@ -87,6 +91,9 @@ namespace ompl_parc
       private:
         /** \brief Give every per-capsule array \e n entries. */
         void resizeArrays(std::size_t n);
+
+        /** \brief See hasBoxes(). */
+        bool boxesCurrent_{false};
     };
 }  // namespace ompl_parc
 

@@ -1,5 +1,7 @@
 #include "ompl_parc/collision/ObstacleSet.h"
 
+#include "ompl_parc/collision/FloatBounds.h"
+#include "ompl_parc/collision/NearCapsules.h"
 #include "ompl_parc/collision/PrimitiveDistance.h"
 
 #include <algorithm>
@@ -64,6 +66,8 @@ void ompl_parc::ObstacleSet::add(const Obstacle &obstacle)
     hiX_.push_back(c.x() + extent.x());
     hiY_.push_back(c.y() + extent.y());
     hiZ_.push_back(c.z() + extent.z());
+    boxes_.push_back({roundedDown(loX_.back()), roundedDown(loY_.back()), roundedDown(loZ_.back()),
+                      roundedUp(hiX_.back()), roundedUp(hiY_.back()), roundedUp(hiZ_.back())});
     shape_.push_back(obstacle.shape);
     frames_.push_back(f);
 }
@@ -72,9 +76,17 @@ bool ompl_parc::ObstacleSet::collides(const CollisionBody &body) const
 {
     if (shape_.empty() || body.size() == 0)
         return false;
-    constexpr double INF = std::numeric_limits<double>::infinity();
-    std::array<double, 3> lo{INF, INF, INF}, hi{-INF, -INF, -INF};
-    body.expandBox(lo, hi);
+    if (body.hasBoxes())
+        return boxedBodyCollides(body);
+    CollisionBody boxed = body;  // a body built by hand, without updateBound(): not on the planners' paths
+    boxed.updateBoxes();
+    return boxedBodyCollides(boxed);
+}
+
+bool ompl_parc::ObstacleSet::boxedBodyCollides(const CollisionBody &body) const
+{
+    std::array<float, 3> lo, hi;
+    body.getBox(lo, hi);
     const std::size_t n = shape_.size();
     for (std::size_t base = 0; base < n; base += CHUNK)
     {
@@ -83,9 +95,9 @@ bool ompl_parc::ObstacleSet::collides(const CollisionBody &body) const
         bool overlap[CHUNK];
         for (std::size_t k = 0; k < m; ++k)
         {
-            const std::size_t o = base + k;
-            overlap[k] = (loX_[o] <= hi[0]) & (hiX_[o] >= lo[0]) & (loY_[o] <= hi[1]) & (hiY_[o] >= lo[1]) &
-                         (loZ_[o] <= hi[2]) & (hiZ_[o] >= lo[2]);
+            const auto &box = boxes_[base + k];
+            overlap[k] = (box[0] <= hi[0]) & (box[3] >= lo[0]) & (box[1] <= hi[1]) & (box[4] >= lo[1]) &
+                         (box[2] <= hi[2]) & (box[5] >= lo[2]);
         }
         std::size_t near[CHUNK], count = 0;
         for (std::size_t k = 0; k < m; ++k)
@@ -93,21 +105,18 @@ bool ompl_parc::ObstacleSet::collides(const CollisionBody &body) const
             near[count] = base + k;
             count += overlap[k] ? 1 : 0;
         }
+        // Per near obstacle: the capsules whose boxes reach its box, then the exact test of each.
         for (std::size_t g = 0; g < count; ++g)
         {
             const std::size_t o = near[g];
-            for (std::size_t i = 0; i < body.size(); ++i)
+            const std::array<float, 3> obstacleLo{boxes_[o][0], boxes_[o][1], boxes_[o][2]},
+                obstacleHi{boxes_[o][3], boxes_[o][4], boxes_[o][5]};
+            for (std::size_t chunk = 0; chunk < std::max<std::size_t>(body.boxStride_, 1); chunk += NearCapsules::CHUNK)
             {
-                const double r = body.radius_[i];
-                if (std::min(body.ax_[i], body.bx_[i]) - r > hiX_[o] ||
-                    std::max(body.ax_[i], body.bx_[i]) + r < loX_[o] ||
-                    std::min(body.ay_[i], body.by_[i]) - r > hiY_[o] ||
-                    std::max(body.ay_[i], body.by_[i]) + r < loY_[o] ||
-                    std::min(body.az_[i], body.bz_[i]) - r > hiZ_[o] ||
-                    std::max(body.az_[i], body.bz_[i]) + r < loZ_[o])
-                    continue;
-                if (capsuleHits(body, i, o))
-                    return true;
+                const NearCapsules capsules(body, chunk, obstacleLo, obstacleHi);
+                for (std::size_t k = 0; k < capsules.size(); ++k)
+                    if (capsuleHits(body, capsules.index(k), o))
+                        return true;
             }
         }
     }

@@ -4,6 +4,7 @@
 #include "ompl_parc/collision/CollisionBody.h"
 #include "ompl_parc/collision/Obstacle.h"
 
+#include <array>
 #include <vector>
 
 namespace ompl_parc
@@ -13,13 +14,15 @@ namespace ompl_parc
 
         Built once, obstacle by obstacle. collides() is two broad-phase levels and one narrow one: the body's
         box against every obstacle's world box (one vectorised pass over structure-of-arrays bounds, chunk by
-        chunk; the near ones are gathered), then each capsule's box against the gathered obstacles, then the
-        capsule's exact distance to the primitive: a sphere through the point-segment distance, a box through
-        the segment-box distance in the box's frame. A cylinder is the intersection of its enclosing capsule
-        (same axis and radius) and its bounding box, and both are tested: a capsule touching the cylinder touches
-        both, so the test is conservative; it errs only where a capsule passes the rim, touching the enclosing
-        capsule's cap and the box's corner but not the cylinder. Every distance is compared with a margin
-        (MARGIN) that covers rounding and FCL's own tolerance, so a collision FCL reports is never missed. */
+        chunk; the near ones are gathered), then, per near obstacle, the capsule boxes of the body against the
+        obstacle's box a SIMD vector of capsules at a time (NearCapsules, single precision rounded outwards: never
+        tighter than the double-precision boxes), then the capsule's exact distance to the primitive: a sphere
+        through the point-segment distance, a box through the segment-box distance in the box's frame. A cylinder
+        is the intersection of its enclosing capsule (same axis and radius) and its bounding box, and both are
+        tested: a capsule touching the cylinder touches both, so the test is conservative; it errs only where a
+        capsule passes the rim, touching the enclosing capsule's cap and the box's corner but not the cylinder.
+        Every distance is compared with a margin (MARGIN) that covers rounding and FCL's own tolerance, so a
+        collision FCL reports is never missed. */
     class ObstacleSet
     {
       public:
@@ -29,8 +32,9 @@ namespace ompl_parc
         /** \brief Add \e obstacle (its shape, size and pose; the caller checked the sizes). */
         void add(const Obstacle &obstacle);
 
-        /** \brief True if any capsule of \e body comes within MARGIN of any obstacle (conservative). Needs no
-            bounding spheres of \e body (updateBound()). */
+        /** \brief True if any capsule of \e body comes within MARGIN of any obstacle (conservative). Uses the
+            body's boxes (updateBound() or updateBoxes()); a body without current ones (CollisionBody::hasBoxes())
+            is checked on a copy that gets them, slower but with the same answer. */
         bool collides(const CollisionBody &body) const;
 
         std::size_t size() const { return shape_.size(); }
@@ -61,8 +65,14 @@ namespace ompl_parc
         /** \brief Capsule \e i of \e body against the cylinder of frame \e f (conservative, see the class). */
         static bool capsuleHitsCylinder(const CollisionBody &body, std::size_t i, const Frame &f);
 
+        /** \brief True if a capsule of \e body (its boxes current) touches an obstacle. */
+        bool boxedBodyCollides(const CollisionBody &body) const;
+
         /** \brief World axis-aligned bounds of each obstacle, one array per coordinate. */
         std::vector<double> loX_, loY_, loZ_, hiX_, hiY_, hiZ_;
+
+        /** \brief The same bounds in single precision, rounded outwards, per obstacle (low x, y, z, high x, y, z). */
+        std::vector<std::array<float, 6>> boxes_;
 
         std::vector<Obstacle::Shape> shape_;
         std::vector<Frame> frames_;

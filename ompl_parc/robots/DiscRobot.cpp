@@ -38,6 +38,7 @@ std::optional<bool> ompl_parc::DiscRobot::sweepValid(const double *from, const d
     sweep.by_[0] = to[1];
     sweep.az_[0] = sweep.bz_[0] = 0.;
     sweep.radius_[0] = radius_;
+    sweep.updateBoxes();
     return !getEnvironment()->collides(sweep);
 }
 
