@@ -49,17 +49,22 @@ bool ompl_parc::bodiesCollide(const CollisionBody &a, const CollisionBody &b)
     if (a.isSingleSphere() && b.isSingleSphere())
         return true;  // two spheres are their own bounds (discs: the common case stops here)
 
-    // The boxes are an allocation of their own: ask for both bodies' at once, so that their cache misses overlap
-    // (measured: ~15 % less time per pair when the bodies are not in cache, no change when they are).
+    // The capsule boxes are an allocation of their own: ask for both bodies' at once, so that their cache misses
+    // overlap (measured: ~15 % less time per pair when the bodies are not in cache, no change when they are).
     for (const CollisionBody *body : {&a, &b})
         for (std::size_t k = 0; k < 6; ++k)
             __builtin_prefetch(body->boxes_.data() + k * body->boxStride_);
 
-    // Only capsules whose boxes reach into the other body's box can touch it; chunk by chunk (a single sphere
-    // keeps no boxes: one chunk of one capsule).
+    // The bodies' boxes (kept beside their spheres: no further memory read) before the capsules'.
     std::array<float, 3> loA, hiA, loB, hiB;
     a.getBox(loA, hiA);
     b.getBox(loB, hiB);
+    for (std::size_t d = 0; d < 3; ++d)
+        if (loA[d] > hiB[d] || loB[d] > hiA[d])
+            return false;
+
+    // Only capsules whose boxes reach into the other body's box can touch it; chunk by chunk (a single sphere
+    // keeps no boxes: one chunk of one capsule).
     const std::size_t slotsA = std::max<std::size_t>(a.boxStride_, 1), slotsB = std::max<std::size_t>(b.boxStride_, 1);
     constexpr std::size_t CHUNK = NearCapsules::CHUNK;
     for (std::size_t baseB = 0; baseB < slotsB; baseB += CHUNK)
