@@ -35,10 +35,10 @@ ompl_parc::NearCapsules::NearCapsules(const CollisionBody &body, std::size_t bas
     for (std::size_t v = base; v < end; v += LANES)  // a vector of capsules per step; padding never overlaps
     {
         const float *p = boxes + v;
-        const auto overlap =
-            (Lanes::load_unaligned(p) <= h0) & (Lanes::load_unaligned(p + 3 * stride) >= l0) &
-            (Lanes::load_unaligned(p + stride) <= h1) & (Lanes::load_unaligned(p + 4 * stride) >= l1) &
-            (Lanes::load_unaligned(p + 2 * stride) <= h2) & (Lanes::load_unaligned(p + 5 * stride) >= l2);
+        const auto overlap = (Lanes::load_unaligned(p) <= h0) & (Lanes::load_unaligned(p + 3 * stride) >= l0) &
+                             (Lanes::load_unaligned(p + stride) <= h1) & (Lanes::load_unaligned(p + 4 * stride) >= l1) &
+                             (Lanes::load_unaligned(p + 2 * stride) <= h2) &
+                             (Lanes::load_unaligned(p + 5 * stride) >= l2);
         if (xsimd::none(overlap))  // the common case: far from the box
             continue;
         xsimd::select(overlap, Lanes(1.f), Lanes(0.f)).store_aligned(overlaps);
