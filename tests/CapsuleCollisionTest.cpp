@@ -1,11 +1,15 @@
 #include "ompl_parc/collision/CapsuleCollision.h"
+#include "ompl_parc/collision/FloatBounds.h"
 
 #include <fcl/geometry/shape/capsule.h>
 #include <fcl/geometry/shape/sphere.h>
 #include <fcl/narrowphase/distance.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
+#include <limits>
+#include <stdexcept>
 #include <random>
 
 using namespace ompl_parc;
@@ -177,7 +181,7 @@ TEST(CapsuleCollision, SinglePrecisionBoxesNeverDropAPairTheExactTestFlags)
     {
         const double offset = offsets[k % 5];
         CollisionBody a, b;
-        const int n = count(rng);
+        const int n = k < 40 ? 63 + k % 4 : count(rng);  // 63-66 capsules: both sides of the 64-capsule chunks
         const double spread = 1. + n / 4.;  // sparse enough that the near contact below often decides
         for (CollisionBody *body : {&a, &b})
             for (int c = body == &a ? n : count(rng); c > 0; --c)
@@ -190,26 +194,93 @@ TEST(CapsuleCollision, SinglePrecisionBoxesNeverDropAPairTheExactTestFlags)
             a.clear();
             a.addSphere(b.ax_[0] + u(rng), b.ay_[0] + u(rng), b.az_[0] + u(rng), r(rng));
         }
-        // One capsule of b moved so that its axis is rr (1 + gap) from the first capsule's of a: a near contact.
+        // One capsule of b made a sphere rr (1 + gap) from the first capsule's axis start of a: a near contact. On
+        // every other pair that capsule of a is a sphere too and the contact lies along a coordinate axis, where
+        // the two boxes touch face to face within ~1e-11, far below a float's spacing at 1e7. (The rounding
+        // contract itself is tested directly: FloatBoundsAreNeverInsideTheirValue.)
         const std::size_t j = b.size() - 1;
-        const double dx = u(rng), dy = u(rng), dz = u(rng), norm = std::sqrt(dx * dx + dy * dy + dz * dz);
+        double dx = u(rng), dy = u(rng), dz = u(rng);
+        if (k % 2 == 1)
+        {
+            a.bx_[0] = a.ax_[0];
+            a.by_[0] = a.ay_[0];
+            a.bz_[0] = a.az_[0];
+            const double sign = u(rng) < 0. ? -1. : 1.;
+            dx = k % 6 == 1 ? sign : 0.;
+            dy = k % 6 == 3 ? sign : 0.;
+            dz = k % 6 == 5 ? sign : 0.;
+        }
+        const double norm = std::sqrt(dx * dx + dy * dy + dz * dz);
         const double reach = (a.radius_[0] + b.radius_[j]) * (1. + gap(rng)) / norm;
         b.ax_[j] = b.bx_[j] = a.ax_[0] + dx * reach;
         b.ay_[j] = b.by_[j] = a.ay_[0] + dy * reach;
         b.az_[j] = b.bz_[j] = a.az_[0] + dz * reach;
         a.updateBound();
         b.updateBound();
-        bool pairwise = false;
-        for (std::size_t i = 0; i < a.size() && !pairwise; ++i)
-            for (std::size_t m = 0; m < b.size() && !pairwise; ++m)
-                pairwise = capsulesCollide(a, i, b, m);
+        bool pairwise = false, swapped = false;  // the reference in each order (rounding need not be symmetric)
+        for (std::size_t i = 0; i < a.size(); ++i)
+            for (std::size_t m = 0; m < b.size(); ++m)
+            {
+                pairwise = pairwise || capsulesCollide(a, i, b, m);
+                swapped = swapped || capsulesCollide(b, m, a, i);
+            }
         EXPECT_EQ(bodiesCollide(a, b), pairwise) << "body pair " << k << " at offset " << offset;
-        EXPECT_EQ(bodiesCollide(b, a), pairwise) << "body pair " << k << " (swapped)";
+        EXPECT_EQ(bodiesCollide(b, a), swapped) << "body pair " << k << " (swapped)";
         collisions += pairwise && offset < 1e38 ? 1 : 0;  // at 1e39 every capsule is the same point: all collide
     }
     EXPECT_GT(collisions, 400);  // both answers are well represented among the 2000 pairs at finite offsets
     EXPECT_LT(collisions, 1600);
     std::printf("[ info ] %d of 2000 body pairs collide\n", collisions);
+}
+
+TEST(CapsuleCollision, FloatBoundsAreNeverInsideTheirValue)
+{
+    // roundedDown(x) <= x <= roundedUp(x) as doubles, across zero, denormals, the float range's ends and beyond;
+    // a bound computed from large numbers is widened by their magnitude; NaN stays NaN (never overlaps).
+    const double values[] = {0.,
+                             1e-45,
+                             1e-40,
+                             1e-30,
+                             0.1,
+                             1.,
+                             1. / 3.,
+                             1e7 + 0.3,
+                             16777217.,
+                             3.4e38,
+                             3.5e38,
+                             1e39,
+                             1e300,
+                             -1e-45,
+                             -0.1,
+                             -1e7,
+                             -3.4e38,
+                             -1e300,
+                             std::numeric_limits<double>::infinity(),
+                             -std::numeric_limits<double>::infinity()};
+    for (const double x : values)
+    {
+        EXPECT_LE(static_cast<double>(roundedDown(x, std::fabs(x))), x) << x;
+        EXPECT_GE(static_cast<double>(roundedUp(x, std::fabs(x))), x) << x;
+    }
+    EXPECT_LE(static_cast<double>(roundedDown(1e-3, 1e7)), 1e-3 - 1e7 * 0x1p-21);  // widened by the scale
+    EXPECT_GE(static_cast<double>(roundedUp(-1e-3, 1e7)), -1e-3 + 1e7 * 0x1p-21);
+    EXPECT_TRUE(std::isnan(roundedDown(std::nan(""), 1.)));
+}
+
+TEST(CapsuleCollision, AStaleBodyIsRefusedNotMisread)
+{
+    CollisionBody a, b;
+    a.addCapsule(0., 0., 0., 1., 0., 0., 0.1);
+    b.addCapsule(0.5, 0.05, 0., 0.5, 1., 0., 0.1);
+    a.updateBound();
+    b.updateBound();
+    EXPECT_TRUE(a.hasBoxes());
+    EXPECT_TRUE(bodiesCollide(a, b));
+    b.addCapsule(0.5, 0.05, 0., 0.5, 1., 0., 0.1);  // changed after updateBound(): its boxes are stale
+    EXPECT_FALSE(b.hasBoxes());
+    EXPECT_THROW(bodiesCollide(a, b), std::logic_error);
+    b.updateBound();
+    EXPECT_TRUE(bodiesCollide(a, b));
 }
 
 TEST(CapsuleCollision, SegmentDistanceMatchesFclDistance)

@@ -5,6 +5,7 @@
 #include <ompl/util/Exception.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 using namespace ompl_parc;
@@ -96,6 +97,39 @@ TEST(Environment, RejectsNonPositiveSizes)
     Obstacle sphere;
     sphere.shape = Obstacle::Shape::SPHERE;
     EXPECT_THROW(env.addObstacle(sphere), ompl::Exception);
+}
+
+TEST(Environment, AHugeRotatedSlabAnswersExactlyAndInfiniteSizesAreRefused)
+{
+    // A thin slab 1e300 wide, tilted: its world box spans all of space in single precision. Bodies of 3 capsules
+    // (one NaN padding lane in their boxes) must still get the slab's exact answer: clear 5 away from its plane,
+    // in collision across it.
+    Environment env;
+    Obstacle slab;
+    slab.name = "slab";
+    slab.shape = Obstacle::Shape::BOX;
+    slab.size = Eigen::Vector3d(1e300, 1e300, 0.1);
+    slab.pose = Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitX());
+    env.addObstacle(slab);
+    const Eigen::Vector3d normal = slab.pose.linear() * Eigen::Vector3d::UnitZ();
+    const Eigen::Vector3d along = slab.pose.linear() * Eigen::Vector3d::UnitX();
+    for (const double height : {5., 0., -5.})
+    {
+        CollisionBody body;
+        for (int c = 0; c < 3; ++c)
+        {
+            const Eigen::Vector3d p = height * normal + (c - 1.) * along, q = p + 0.3 * along;
+            body.addCapsule(p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), 0.05);
+        }
+        body.updateBound();
+        EXPECT_EQ(env.collides(body), height == 0.) << "at height " << height;
+    }
+    Obstacle infinite = slab;
+    infinite.size.x() = std::numeric_limits<double>::infinity();
+    EXPECT_THROW(env.addObstacle(infinite), ompl::Exception);
+    Obstacle nowhere = slab;
+    nowhere.pose.translation().x() = std::nan("");
+    EXPECT_THROW(env.addObstacle(nowhere), ompl::Exception);
 }
 
 TEST(Environment, CapsulesAgainstRotatedBoxAndSphere)

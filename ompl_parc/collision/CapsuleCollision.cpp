@@ -4,6 +4,7 @@
 #include "ompl_parc/collision/PrimitiveDistance.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 double ompl_parc::segmentDistanceSquared(const CollisionBody &a, std::size_t i, const CollisionBody &b, std::size_t j)
 {
@@ -48,6 +49,8 @@ bool ompl_parc::bodiesCollide(const CollisionBody &a, const CollisionBody &b)
         return false;
     if (a.isSingleSphere() && b.isSingleSphere())
         return true;  // two spheres are their own bounds (discs: the common case stops here)
+    if (!a.hasBoxes() || !b.hasBoxes())  // the capsule loops below run over the boxes: stale ones would misread
+        throw std::logic_error("bodiesCollide: a body changed after updateBound() (call it after the last change)");
 
     // The capsule boxes are an allocation of their own: ask for both bodies' at once, so that their cache misses
     // overlap (measured: ~15 % less time per pair when the bodies are not in cache, no change when they are).

@@ -129,8 +129,9 @@ void ompl_parc::CollisionBody::updateBoxes()
         const double *pa = a[d]->data(), *pb = b[d]->data(), *r = radius_.data();
         for (std::size_t i = 0; i < n; ++i)  // a map (vectorised), then the reductions
         {
-            lo[i] = roundedDown(std::min(pa[i], pb[i]) - r[i]);
-            hi[i] = roundedUp(std::max(pa[i], pb[i]) + r[i]);
+            const double scale = std::max(std::fabs(pa[i]), std::fabs(pb[i])) + std::fabs(r[i]);
+            lo[i] = roundedDown(std::min(pa[i], pb[i]) - r[i], scale);
+            hi[i] = roundedUp(std::max(pa[i], pb[i]) + r[i], scale);
         }
         float bodyLo = inf, bodyHi = -inf;
         for (std::size_t i = 0; i < n; ++i)
@@ -138,8 +139,9 @@ void ompl_parc::CollisionBody::updateBoxes()
             bodyLo = std::min(bodyLo, lo[i]);
             bodyHi = std::max(bodyHi, hi[i]);
         }
-        std::fill(lo + n, lo + stride, inf);  // padding: empty boxes, never overlapping anything
-        std::fill(hi + n, hi + stride, -inf);
+        // Padding: NaN, which fails every comparison, so it never overlaps anything (not even an infinite box).
+        std::fill(lo + n, lo + stride, std::numeric_limits<float>::quiet_NaN());
+        std::fill(hi + n, hi + stride, std::numeric_limits<float>::quiet_NaN());
         boxLo_[d] = bodyLo;
         boxHi_[d] = bodyHi;
     }
@@ -156,8 +158,9 @@ void ompl_parc::CollisionBody::getBox(std::array<float, 3> &lo, std::array<float
     const double center[3] = {ax_[0], ay_[0], az_[0]}, r = radius_[0];
     for (std::size_t d = 0; d < 3; ++d)
     {
-        lo[d] = roundedDown(center[d] - r);
-        hi[d] = roundedUp(center[d] + r);
+        const double scale = std::fabs(center[d]) + std::fabs(r);
+        lo[d] = roundedDown(center[d] - r, scale);
+        hi[d] = roundedUp(center[d] + r, scale);
     }
 }
 

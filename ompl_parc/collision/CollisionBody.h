@@ -12,9 +12,10 @@ namespace ompl_parc
         A sphere is a capsule whose two end points coincide, so discs, planar-arm links and sphere
         models of 3D arms all share one representation and one robot-robot test. The data is stored
         structure-of-arrays so that the pairwise loops in bodiesCollide() vectorise. 2D robots use z = 0.
-        Two levels of bounding spheres give cheap early-outs: one around the whole body, and one around
-        each capsule (its axis midpoint, half its length plus its radius), so that the exact segment
-        distance is computed only for capsule pairs whose spheres overlap. */
+        updateBound() adds what the tests rule pairs out by: a bounding sphere around the whole body, one
+        around each capsule (for self-collision), and each capsule's box in single precision rounded outwards
+        (boxes_: the broad phase of the robot-robot and robot-environment tests), so that the exact distances
+        in double precision run only for the few pairs that could touch. */
     class CollisionBody
     {
       public:
@@ -73,9 +74,10 @@ namespace ompl_parc
 
         /** \brief Per capsule, its axis-aligned box (end points -/+ radius) in single precision, rounded outwards past
             the conversion's error: six arrays (low x, y, z, high x, y, z) of boxStride_ floats each, boxStride_ being
-            size() rounded up to the library's SIMD width; the entries past size() are empty boxes. The robot-robot
-            test's broad phase (bodiesCollide()) reads only these, a vector of capsules per instruction, and the
-            double-precision arrays only for the capsule pairs whose boxes overlap. */
+            size() rounded up to the library's SIMD width; the entries past size() are NaN (never overlapping).
+            The broad phase of the robot-robot and robot-environment tests (bodiesCollide(), ObstacleSet::collides())
+            reads these, a vector of capsules per instruction, and the double-precision arrays only for the
+            pairs whose boxes overlap. */
         std::size_t boxStride_{0};
         std::vector<float> boxes_;
 

@@ -1,5 +1,7 @@
 #include "ompl_parc/collision/Environment.h"
 
+#include <cmath>
+
 #include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/capsule.h>
 #include <fcl/geometry/shape/cylinder.h>
@@ -12,11 +14,12 @@ namespace
     bool positiveSize(const ompl_parc::Obstacle &o)
     {
         using Shape = ompl_parc::Obstacle::Shape;
+        const auto positive = [](double v) { return v > 0. && std::isfinite(v); };
         if (o.shape == Shape::BOX)
-            return (o.size.array() > 0.).all();
+            return positive(o.size.x()) && positive(o.size.y()) && positive(o.size.z());
         if (o.shape == Shape::SPHERE)
-            return o.size.x() > 0.;
-        return o.size.x() > 0. && o.size.z() > 0.;
+            return positive(o.size.x());
+        return positive(o.size.x()) && positive(o.size.z());
     }
 }  // namespace
 
@@ -38,7 +41,9 @@ std::shared_ptr<fcl::CollisionGeometryd> ompl_parc::Environment::createGeometry(
 void ompl_parc::Environment::addObstacle(const Obstacle &obstacle)
 {
     if (!positiveSize(obstacle))
-        throw ompl::Exception("Environment", "obstacle '" + obstacle.name + "' has a non-positive size");
+        throw ompl::Exception("Environment", "obstacle '" + obstacle.name + "' has a non-positive or non-finite size");
+    if (!obstacle.pose.matrix().allFinite())
+        throw ompl::Exception("Environment", "obstacle '" + obstacle.name + "' has a non-finite pose");
     auto object = std::make_shared<fcl::CollisionObjectd>(createGeometry(obstacle), obstacle.pose);
     object->computeAABB();
     obstacles_.push_back(obstacle);

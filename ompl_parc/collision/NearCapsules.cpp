@@ -8,6 +8,7 @@ namespace
 {
     using Lanes = xsimd::batch<float>;
     constexpr std::size_t LANES = Lanes::size;
+    static_assert(ompl_parc::NearCapsules::CHUNK % LANES == 0, "a chunk must be whole SIMD vectors");
 }  // namespace
 
 ompl_parc::NearCapsules::NearCapsules(const CollisionBody &body, std::size_t base, const std::array<float, 3> &boxLo,
@@ -32,7 +33,7 @@ ompl_parc::NearCapsules::NearCapsules(const CollisionBody &body, std::size_t bas
     const float *boxes = body.boxes_.data();
     const Lanes l0(boxLo[0]), l1(boxLo[1]), l2(boxLo[2]), h0(boxHi[0]), h1(boxHi[1]), h2(boxHi[2]);
     alignas(64) float overlaps[LANES];
-    for (std::size_t v = base; v < end; v += LANES)  // a vector of capsules per step; padding never overlaps
+    for (std::size_t v = base; v < end; v += LANES)  // a vector of capsules per step; NaN padding never overlaps
     {
         const float *p = boxes + v;
         const auto overlap = (Lanes::load_unaligned(p) <= h0) & (Lanes::load_unaligned(p + 3 * stride) >= l0) &

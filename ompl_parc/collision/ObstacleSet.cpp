@@ -66,8 +66,10 @@ void ompl_parc::ObstacleSet::add(const Obstacle &obstacle)
     hiX_.push_back(c.x() + extent.x());
     hiY_.push_back(c.y() + extent.y());
     hiZ_.push_back(c.z() + extent.z());
-    boxes_.push_back({roundedDown(loX_.back()), roundedDown(loY_.back()), roundedDown(loZ_.back()),
-                      roundedUp(hiX_.back()), roundedUp(hiY_.back()), roundedUp(hiZ_.back())});
+    const Eigen::Vector3d scale = c.cwiseAbs() + extent;  // what the bounds were computed from
+    boxes_.push_back({roundedDown(loX_.back(), scale.x()), roundedDown(loY_.back(), scale.y()),
+                      roundedDown(loZ_.back(), scale.z()), roundedUp(hiX_.back(), scale.x()),
+                      roundedUp(hiY_.back(), scale.y()), roundedUp(hiZ_.back(), scale.z())});
     shape_.push_back(obstacle.shape);
     frames_.push_back(f);
 }

@@ -13,8 +13,8 @@ namespace ompl_parc
         (analytic distances, no FCL, no allocation).
 
         Built once, obstacle by obstacle. collides() is two broad-phase levels and one narrow one: the body's
-        box against every obstacle's world box (one vectorised pass over structure-of-arrays bounds, chunk by
-        chunk; the near ones are gathered), then, per near obstacle, the capsule boxes of the body against the
+        box against every obstacle's world box (single precision, rounded outwards; chunk by chunk, the near ones
+        gathered by a branch-free compaction), then, per near obstacle, the capsule boxes of the body against the
         obstacle's box a SIMD vector of capsules at a time (NearCapsules, single precision rounded outwards: never
         tighter than the double-precision boxes), then the capsule's exact distance to the primitive: a sphere
         through the point-segment distance, a box through the segment-box distance in the box's frame. A cylinder
