@@ -182,7 +182,7 @@ TEST(CapsuleCollision, SinglePrecisionBoxesNeverDropAPairTheExactTestFlags)
         const double offset = offsets[k % 5];
         CollisionBody a, b;
         const int n = k < 40 ? 63 + k % 4 : count(rng);  // 63-66 capsules: both sides of the 64-capsule chunks
-        const double spread = 1. + n / 4.;  // sparse enough that the near contact below often decides
+        const double spread = 1. + n / 4.;               // sparse enough that the near contact below often decides
         for (CollisionBody *body : {&a, &b})
             for (int c = body == &a ? n : count(rng); c > 0; --c)
             {
