@@ -43,7 +43,7 @@ void ompl_parc::ObstacleSet::add(const Obstacle &obstacle)
             f.rotation[3 * row + col] = r(col, row);  // R^T: world to local
         f.center[row] = c[row];
     }
-    Eigen::Vector3d half;
+    Eigen::Vector3d half = Eigen::Vector3d::Zero();  // every shape sets it below (the compiler cannot tell)
     switch (obstacle.shape)
     {
         case Obstacle::Shape::BOX:
