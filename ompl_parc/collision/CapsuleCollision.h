@@ -16,11 +16,13 @@ namespace ompl_parc
 
     /** \brief True if any capsule of \e a overlaps any capsule of \e b.
 
-        This is the robot-robot test on the hot path of conflict detection. The bodies' bounding spheres and boxes come
-       first; then, a SIMD vector of capsules per instruction, the capsules of each body whose boxes overlap the other
-        body's box (CollisionBody::boxes_, single precision rounded outwards: never tighter than the capsule); per
-        pair of those, their boxes, and the exact segment distance in double precision only where the two boxes
-        overlap. The boxes only rule pairs out that cannot touch, so the answer is that of testing every pair. */
+        This is the robot-robot test on the hot path of conflict detection. The bodies' bounding spheres and
+        boxes come first; then, a SIMD vector of capsules per instruction, the capsules of each body whose boxes
+        overlap the other body's box (CollisionBody::boxes_, single precision rounded outwards: never tighter
+        than the capsule); per pair of those, their boxes, and the exact segment distance in double precision
+        only where the two boxes overlap. The boxes only rule pairs out that cannot touch, so the answer is that
+        of testing every pair. Both bodies need current boxes (updateBound()): a stale one is refused with
+        std::logic_error. */
     bool bodiesCollide(const CollisionBody &a, const CollisionBody &b);
 }  // namespace ompl_parc
 

@@ -8,6 +8,18 @@
 #include <cmath>
 #include <limits>
 
+namespace
+{
+    /** The single-precision bounds, rounded outwards, of the interval from min(a, b) - r to max(a, b) + r along
+        one axis: a capsule's box (a sphere's when a == b). Inline, so the loop over capsules vectorises. */
+    inline void roundedInterval(double a, double b, double r, float &lo, float &hi)
+    {
+        const double scale = std::max(std::fabs(a), std::fabs(b)) + std::fabs(r);
+        lo = ompl_parc::roundedDown(std::min(a, b) - r, scale);
+        hi = ompl_parc::roundedUp(std::max(a, b) + r, scale);
+    }
+}  // namespace
+
 void ompl_parc::CollisionBody::clear()
 {
     for (auto *v : {&ax_, &ay_, &az_, &bx_, &by_, &bz_, &radius_})
@@ -54,8 +66,7 @@ void ompl_parc::CollisionBody::updateBound()
         sphereY_[0] = centerY_ = ay_[0];
         sphereZ_[0] = centerZ_ = az_[0];
         sphereRadius_[0] = boundRadius_ = radius_[0];
-        boxStride_ = 0;  // updateBoxes() for one sphere, which keeps no boxes
-        boxesCurrent_ = true;
+        updateBoxes();  // nothing to compute: one sphere keeps no boxes
         return;
     }
     // Restricted plain pointers: distinct vectors never alias, which the compiler cannot prove by itself
@@ -128,11 +139,7 @@ void ompl_parc::CollisionBody::updateBoxes()
         float *lo = boxes_.data() + d * stride, *hi = boxes_.data() + (3 + d) * stride;
         const double *pa = a[d]->data(), *pb = b[d]->data(), *r = radius_.data();
         for (std::size_t i = 0; i < n; ++i)  // a map (vectorised), then the reductions
-        {
-            const double scale = std::max(std::fabs(pa[i]), std::fabs(pb[i])) + std::fabs(r[i]);
-            lo[i] = roundedDown(std::min(pa[i], pb[i]) - r[i], scale);
-            hi[i] = roundedUp(std::max(pa[i], pb[i]) + r[i], scale);
-        }
+            roundedInterval(pa[i], pb[i], r[i], lo[i], hi[i]);
         float bodyLo = inf, bodyHi = -inf;
         for (std::size_t i = 0; i < n; ++i)
         {
@@ -155,13 +162,9 @@ void ompl_parc::CollisionBody::getBox(std::array<float, 3> &lo, std::array<float
         hi = boxHi_;
         return;
     }
-    const double center[3] = {ax_[0], ay_[0], az_[0]}, r = radius_[0];
+    const double center[3] = {ax_[0], ay_[0], az_[0]};
     for (std::size_t d = 0; d < 3; ++d)
-    {
-        const double scale = std::fabs(center[d]) + std::fabs(r);
-        lo[d] = roundedDown(center[d] - r, scale);
-        hi[d] = roundedUp(center[d] + r, scale);
-    }
+        roundedInterval(center[d], center[d], radius_[0], lo[d], hi[d]);
 }
 
 void ompl_parc::CollisionBody::expandBox(std::array<double, 3> &lo, std::array<double, 3> &hi) const
