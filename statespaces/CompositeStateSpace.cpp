@@ -7,11 +7,89 @@
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <new>
 #include <string>
 
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
+
 namespace ob = ompl::base;
+
+namespace
+{
+    std::size_t align(std::size_t bytes)
+    {
+        return (bytes + alignof(std::max_align_t) - 1) / alignof(std::max_align_t) * alignof(std::max_align_t);
+    }
+
+    /** \brief The allocation that the states of one allocStates() call share. It counts the states not yet freed
+        and goes with the last. From 512 KiB on it is mapped on its own, rounded up to whole 2 MiB pages, and
+        marked for transparent huge pages (at most 4x the memory, for one path, against 128+ faults of 4 KiB). */
+    class SharedStates
+    {
+      public:
+        static SharedStates *create(std::size_t bytes, std::size_t states)
+        {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+            constexpr std::size_t hugePage = std::size_t{2} << 20;
+            if (bytes >= hugePage / 4 && bytes <= std::numeric_limits<std::size_t>::max() / 2)
+            {
+                // Map one huge page more than needed and keep the 2 MiB-aligned part: only aligned 2 MiB ranges
+                // can be huge pages.
+                const std::size_t length = (bytes + hugePage - 1) / hugePage * hugePage;
+                void *raw = mmap(nullptr, length + hugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+                if (raw != MAP_FAILED)
+                {
+                    const auto start = reinterpret_cast<std::uintptr_t>(raw);
+                    const std::uintptr_t aligned = (start + hugePage - 1) & ~std::uintptr_t{hugePage - 1};
+                    if (aligned > start)
+                        munmap(raw, aligned - start);
+                    if (const std::size_t tail = start + hugePage - aligned; tail > 0)
+                        munmap(reinterpret_cast<void *>(aligned + length), tail);
+                    // Only a hint: where transparent huge pages are off this is ordinary memory.
+                    madvise(reinterpret_cast<void *>(aligned), length, MADV_HUGEPAGE);
+                    return new (reinterpret_cast<void *>(aligned)) SharedStates(length, states, true);
+                }
+            }
+#endif
+            return new (::operator new(bytes)) SharedStates(bytes, states, false);
+        }
+
+        /** \brief One of its states was freed: the last one frees the allocation. */
+        void release()
+        {
+            if (live_.fetch_sub(1, std::memory_order_acq_rel) != 1)
+                return;
+            const std::size_t bytes = bytes_;
+            const bool mapped = mapped_;
+            this->~SharedStates();
+#ifdef __linux__
+            if (mapped)
+            {
+                munmap(static_cast<void *>(this), bytes);
+                return;
+            }
+#endif
+            static_cast<void>(bytes);
+            static_cast<void>(mapped);
+            ::operator delete(static_cast<void *>(this));
+        }
+
+      private:
+        SharedStates(std::size_t bytes, std::size_t states, bool mapped) : live_(states), bytes_(bytes), mapped_(mapped)
+        {
+        }
+
+        std::atomic<std::size_t> live_;
+        std::size_t bytes_;
+        bool mapped_;
+    };
+}  // namespace
 
 ompl_parc::CompositeStateSpace::CompositeStateSpace(const std::vector<ob::StateSpacePtr> &robotSpaces)
 {
@@ -35,20 +113,17 @@ ompl_parc::CompositeStateSpace::CompositeStateSpace(const std::vector<ob::StateS
         valueStart_.push_back(values);
         values += space->getDimension();
     }
-    const auto align = [](std::size_t bytes)
-    { return (bytes + alignof(std::max_align_t) - 1) / alignof(std::max_align_t) * alignof(std::max_align_t); };
-    componentsOffset_ = align(sizeof(StateType));
+    stateOffset_ = align(sizeof(SharedStates *));
+    componentsOffset_ = stateOffset_ + align(sizeof(StateType));
     robotStatesOffset_ = componentsOffset_ + align(sizeof(ob::State *) * robotSpaces.size());
     valuesOffset_ = robotStatesOffset_ + align(sizeof(ob::RealVectorStateSpace::StateType) * robotSpaces.size());
-    blockSize_ = valuesOffset_ + sizeof(double) * values;
+    blockSize_ = align(valuesOffset_ + sizeof(double) * values);
 }
 
-ob::State *ompl_parc::CompositeStateSpace::allocState() const
+ob::State *ompl_parc::CompositeStateSpace::placeState(char *block, void *shared) const
 {
-    if (!singleBlock_)
-        return ob::CompoundStateSpace::allocState();
-    char *block = static_cast<char *>(::operator new(blockSize_));
-    auto *state = new (block) StateType();
+    *reinterpret_cast<void **>(block) = shared;
+    auto *state = new (block + stateOffset_) StateType();
     state->components = reinterpret_cast<ob::State **>(block + componentsOffset_);
     auto *robots = reinterpret_cast<ob::RealVectorStateSpace::StateType *>(block + robotStatesOffset_);
     auto *values = reinterpret_cast<double *>(block + valuesOffset_);
@@ -61,11 +136,39 @@ ob::State *ompl_parc::CompositeStateSpace::allocState() const
     return state;
 }
 
+ob::State *ompl_parc::CompositeStateSpace::allocState() const
+{
+    if (!singleBlock_)
+        return ob::CompoundStateSpace::allocState();
+    return placeState(static_cast<char *>(::operator new(blockSize_)), nullptr);
+}
+
+void ompl_parc::CompositeStateSpace::allocStates(std::size_t count, ob::State **out) const
+{
+    if (!singleBlock_ || count < 2)
+    {
+        for (std::size_t k = 0; k < count; ++k)
+            out[k] = allocState();
+        return;
+    }
+    const std::size_t header = align(sizeof(SharedStates));
+    if (count > (std::numeric_limits<std::size_t>::max() - header) / blockSize_)
+        throw std::bad_alloc();
+    SharedStates *shared = SharedStates::create(header + count * blockSize_, count);
+    char *first = reinterpret_cast<char *>(shared) + header;
+    for (std::size_t k = 0; k < count; ++k)
+        out[k] = placeState(first + k * blockSize_, shared);
+}
+
 void ompl_parc::CompositeStateSpace::freeState(ob::State *state) const
 {
     if (!singleBlock_)
         return ob::CompoundStateSpace::freeState(state);
-    ::operator delete(static_cast<void *>(state));
+    char *block = reinterpret_cast<char *>(state) - stateOffset_;
+    if (auto *shared = static_cast<SharedStates *>(*reinterpret_cast<void **>(block)))
+        shared->release();
+    else
+        ::operator delete(static_cast<void *>(block));
 }
 
 ompl_parc::CompositeStateSpacePtr ompl_parc::CompositeStateSpace::createSubspace(

@@ -3,7 +3,11 @@
 #include <gtest/gtest.h>
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/spaces/SO2StateSpace.h>
 #include <ompl/util/Exception.h>
+
+#include <thread>
+#include <vector>
 
 using namespace ompl_parc;
 namespace ob = ompl::base;
@@ -85,4 +89,87 @@ TEST(CompositeStateSpace, RejectsBadInput)
     EXPECT_THROW(CompositeStateSpace(std::vector<ob::StateSpacePtr>{nullptr}), ompl::Exception);
     auto space = std::make_shared<CompositeStateSpace>(spaces(2, 2, 1.));
     EXPECT_THROW(space->createSubspace({0, 2}), ompl::Exception);
+}
+
+namespace
+{
+    /** Writes a value unique to (state, coordinate) into every state, then reads all back: states that overlap or
+        share values would show here (and under ASan as out-of-bounds writes). */
+    void expectDisjointStates(const ob::StateSpace &space, const std::vector<ob::State *> &states)
+    {
+        const unsigned int dims = space.getDimension();
+        for (std::size_t k = 0; k < states.size(); ++k)
+            for (unsigned int d = 0; d < dims; ++d)
+                *space.getValueAddressAtIndex(states[k], d) = static_cast<double>(k * dims + d);
+        for (std::size_t k = 0; k < states.size(); ++k)
+            for (unsigned int d = 0; d < dims; ++d)
+                ASSERT_EQ(*space.getValueAddressAtIndex(states[k], d), static_cast<double>(k * dims + d));
+    }
+}  // namespace
+
+TEST(CompositeStateSpace, SharedStatesAreDisjointAndFreedOneByOne)
+{
+    // 128 planar robots: 300 states of ~4 KB are past the 512 KiB from which the allocation is mapped on its own.
+    for (const std::size_t robots : {1, 3, 128})
+    {
+        auto space = std::make_shared<CompositeStateSpace>(spaces(robots, 2, 10.));
+        space->setup();
+        for (const std::size_t count : {0, 1, 2, 7, 300})
+        {
+            std::vector<ob::State *> states(count, nullptr);
+            space->allocStates(count, states.data());
+            expectDisjointStates(*space, states);
+            // A shared state behaves as any other: copied into, cloned, compared.
+            if (count > 1)
+            {
+                ob::State *single = space->allocState();
+                space->copyState(single, states[count - 1]);
+                space->copyState(states[0], single);
+                EXPECT_TRUE(space->equalStates(states[0], states[count - 1]));
+                space->freeState(single);
+            }
+            // Freed in an order unrelated to the allocation's (odd ones first, then even ones backwards).
+            for (std::size_t k = 1; k < count; k += 2)
+                space->freeState(states[k]);
+            for (std::size_t k = count; k-- > 0;)
+                if (k % 2 == 0)
+                    space->freeState(states[k]);
+        }
+    }
+}
+
+TEST(CompositeStateSpace, SharedStatesFreedFromManyThreads)
+{
+    // The last state freed frees the allocation, whichever thread frees it (TSan checks the count's ordering).
+    auto space = std::make_shared<CompositeStateSpace>(spaces(64, 2, 10.));
+    space->setup();
+    for (int round = 0; round < 20; ++round)
+    {
+        std::vector<ob::State *> states(400, nullptr);
+        space->allocStates(states.size(), states.data());
+        expectDisjointStates(*space, states);
+        std::vector<std::thread> threads;
+        for (std::size_t t = 0; t < 4; ++t)
+            threads.emplace_back(
+                [&, t]
+                {
+                    for (std::size_t k = t; k < states.size(); k += 4)
+                        space->freeState(states[k]);
+                });
+        for (auto &thread : threads)
+            thread.join();
+    }
+}
+
+TEST(CompositeStateSpace, OtherLayoutsAllocateStatesOneByOne)
+{
+    // A team with a non-vector robot space keeps OMPL's layout; allocStates still hands out independent states.
+    auto so2 = std::make_shared<ob::SO2StateSpace>();
+    auto space = std::make_shared<CompositeStateSpace>(std::vector<ob::StateSpacePtr>{spaces(1, 2, 10.)[0], so2});
+    space->setup();
+    std::vector<ob::State *> states(5, nullptr);
+    space->allocStates(states.size(), states.data());
+    expectDisjointStates(*space, states);
+    for (ob::State *state : states)
+        space->freeState(state);
 }

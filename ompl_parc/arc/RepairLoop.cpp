@@ -235,13 +235,15 @@ ompl::geometric::PathGeometricPtr ompl_parc::RepairLoop::buildSolutionPath() con
     const auto times = plan_.getBreakpoints();
     auto &states = path->getStates();
     states.resize(times.size());
+    // One allocation for all states (few page faults: CompositeStateSpace::allocStates); the workers fill them.
+    si->getCompositeSpace()->allocStates(states.size(), states.data());
     const std::size_t w = pool_->getWorkerCount(), chunk = (states.size() + w - 1) / w;
     pool_->run(
         [&](unsigned int worker)
         {
             const std::size_t from = std::min(states.size(), worker * chunk),
                               to = std::min(states.size(), from + chunk);
-            plan_.allocateStates(*si, times, from, to, states.data() + from);
+            plan_.fillStates(*si, times, from, to, states.data() + from);
         });
     return path;
 }

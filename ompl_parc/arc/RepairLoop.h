@@ -74,7 +74,7 @@ namespace ompl_parc
         bool resolve(const ompl::base::PlannerTerminationCondition &ptc);
 
         /** \brief The plan as a composite path, one state per breakpoint (MultiRobotPlan::toPathGeometric),
-            its states allocated by all workers. */
+            its states allocated at once and filled by all workers. */
         ompl::geometric::PathGeometricPtr buildSolutionPath() const;
 
         const MultiRobotPlan &getPlan() const { return plan_; }

@@ -116,24 +116,20 @@ og::PathGeometricPtr ompl_parc::MultiRobotPlan::toPathGeometric(const MultiRobot
     // The path owns the states we allocate straight into it (append() would clone each one once more).
     auto &states = path->getStates();
     states.resize(times.size());
-    allocateStates(*si, times, 0, times.size(), states.data());
+    si->getCompositeSpace()->allocStates(states.size(), states.data());
+    fillStates(*si, times, 0, times.size(), states.data());
     return path;
 }
 
-void ompl_parc::MultiRobotPlan::allocateStates(const MultiRobotSpaceInformation &si,
-                                               const std::vector<std::size_t> &times, std::size_t from,
-                                               std::size_t to, ob::State **out) const
+void ompl_parc::MultiRobotPlan::fillStates(const MultiRobotSpaceInformation &si, const std::vector<std::size_t> &times,
+                                           std::size_t from, std::size_t to, ob::State *const *states) const
 {
     std::vector<TimedPath::Cursor> cursors;
     for (const auto &path : paths_)
         cursors.emplace_back(path);
     for (std::size_t k = from; k < to; ++k)
-    {
-        ob::State *state = si.allocState();
         for (std::size_t i = 0; i < getRobotCount(); ++i)
-            cursors[i].get(times[k], si.getRobotValues(state, i));
-        out[k - from] = state;
-    }
+            cursors[i].get(times[k], si.getRobotValues(states[k - from], i));
 }
 
 std::vector<ompl_parc::TimedPath> ompl_parc::MultiRobotPlan::layTeamPath(const MultiRobotSpaceInformation &si,

@@ -78,10 +78,11 @@ namespace ompl_parc
             PathGeometric copies its states, so it is built once, in place). */
         ompl::geometric::PathGeometricPtr toPathGeometric(const MultiRobotSpaceInformationPtr &si) const;
 
-        /** \brief Allocate the composite states at timesteps times[from, to) into \e out[0 .. to - from): the
-            piece of toPathGeometric() that several threads can do at once on disjoint ranges. */
-        void allocateStates(const MultiRobotSpaceInformation &si, const std::vector<std::size_t> &times,
-                            std::size_t from, std::size_t to, ompl::base::State **out) const;
+        /** \brief Write the configurations at timesteps times[from, to) into the composite states
+            \e states[0 .. to - from) (allocated, e.g. by CompositeStateSpace::allocStates()): the piece of
+            toPathGeometric() that several threads can do at once on disjoint ranges. */
+        void fillStates(const MultiRobotSpaceInformation &si, const std::vector<std::size_t> &times, std::size_t from,
+                        std::size_t to, ompl::base::State *const *states) const;
 
         /** \brief Timesteps a straight motion of length \e distance takes at \e resolution (0 for none): how every
             path is laid on the grid. */
