@@ -63,6 +63,8 @@ ompl_parc::ArcPlannerBase::ArcPlannerBase(const ob::SpaceInformationPtr &si, con
                               "hierarchy,composite,prioritized,composite-first");
     declareParam<bool>("simplify_initial", this, &ArcPlannerBase::setSimplifyInitial,
                        &ArcPlannerBase::getSimplifyInitial, "0,1");
+    declareParam<bool>("straight_initial", this, &ArcPlannerBase::setStraightInitial,
+                       &ArcPlannerBase::getStraightInitial, "0,1");
     declareParam<bool>("shorten_patches", this, &ArcPlannerBase::setShortenPatches, &ArcPlannerBase::getShortenPatches,
                        "0,1");
     declareParam<unsigned int>("seed", this, &ArcPlannerBase::setSeed, &ArcPlannerBase::getSeed);
@@ -140,6 +142,12 @@ void ompl_parc::ArcPlannerBase::setSimplifyInitial(bool simplify)
 {
     options_.settings.simplifyInitial = simplify;
     options_.settings.explicitFields |= ArcSettings::SIMPLIFY_INITIAL;
+}
+
+void ompl_parc::ArcPlannerBase::setStraightInitial(bool straight)
+{
+    options_.settings.straightInitial = straight;
+    options_.settings.explicitFields |= ArcSettings::STRAIGHT_INITIAL;
 }
 
 void ompl_parc::ArcPlannerBase::setShortenPatches(bool shorten)

@@ -72,6 +72,8 @@ namespace ompl_parc
         std::string getSolvers() const { return ArcSettings::toString(getSettings().solvers); }
         void setSimplifyInitial(bool simplify);
         bool getSimplifyInitial() const { return getSettings().simplifyInitial; }
+        void setStraightInitial(bool straight);
+        bool getStraightInitial() const { return getSettings().straightInitial; }
         void setShortenPatches(bool shorten);
         bool getShortenPatches() const { return getSettings().shortenPatches; }
         /** \brief Seconds of time-aware shortcutting (PlanSmoother) after a solution; 0 (the default): none. */

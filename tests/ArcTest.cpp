@@ -131,7 +131,7 @@ TEST(Arc, ParametersAreDeclaredAndStatisticsReported)
     auto &params = arc.params();
     for (const char *name :
          {"profile", "window", "growth", "growth_step", "endpoint_step", "bound_margin", "min_bound_range",
-          "sample_cap", "solvers", "simplify_initial", "shorten_patches", "smooth", "seed"})
+          "sample_cap", "solvers", "simplify_initial", "straight_initial", "shorten_patches", "smooth", "seed"})
         EXPECT_TRUE(params.hasParam(name)) << name;
     EXPECT_TRUE(params.setParam("profile", "planar"));
     EXPECT_EQ(arc.getWindow(), 100u);

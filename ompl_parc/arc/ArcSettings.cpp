@@ -41,6 +41,7 @@ void ompl_parc::ArcSettings::applyProfile(const std::string &name)
     take(SOLVERS, solvers, p.solvers);
     take(SIMPLIFY_INITIAL, simplifyInitial, p.simplifyInitial);
     take(SHORTEN_PATCHES, shortenPatches, p.shortenPatches);
+    take(STRAIGHT_INITIAL, straightInitial, p.straightInitial);
 }
 
 std::vector<std::string> ompl_parc::ArcSettings::profileNames()

@@ -8,12 +8,15 @@
 #include <ompl/base/ScopedState.h>
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
 
 ompl_parc::InitialPlanner::InitialPlanner(const MultiRobotProblem &problem, bool simplify,
-                                          ob::PlannerAllocator allocator)
-    : problem_(problem), simplify_(simplify), allocator_(std::move(allocator))
+                                          ob::PlannerAllocator allocator, bool straightFirst)
+    : problem_(problem), simplify_(simplify), straightFirst_(straightFirst), allocator_(std::move(allocator))
 {
     if (!allocator_)
         allocator_ = [](const ob::SpaceInformationPtr &si) { return std::make_shared<og::RRTConnect>(si); };
@@ -22,6 +25,12 @@ ompl_parc::InitialPlanner::InitialPlanner(const MultiRobotProblem &problem, bool
 bool ompl_parc::InitialPlanner::plan(std::size_t robot, const ob::PlannerTerminationCondition &ptc,
                                      std::uint_fast32_t seed, TimedPath &path) const
 {
+    if (straightFirst_)
+        if (auto straight = straightPath(robot, ptc))
+        {
+            path = std::move(*straight);
+            return true;
+        }
     const auto &mrsi = *problem_.getSpaceInformation();
     auto si = std::make_shared<MultiRobotSpaceInformation>(
         std::vector<RobotPtr>{mrsi.getRobot(robot)}, mrsi.getResolution(), std::vector<ob::RealVectorBounds>{}, seed);
@@ -48,4 +57,38 @@ bool ompl_parc::InitialPlanner::plan(std::size_t robot, const ob::PlannerTermina
     }
     path = MultiRobotPlan::fromPathGeometric(*si, geometric).getPath(0);
     return true;
+}
+
+std::optional<ompl_parc::TimedPath> ompl_parc::InitialPlanner::straightPath(std::size_t robot,
+                                                                         const ob::PlannerTerminationCondition &ptc) const
+{
+    const auto &mrsi = *problem_.getSpaceInformation();
+    const Robot &body = *mrsi.getRobot(robot);
+    const unsigned int d = body.getDimension();
+    const double *s = problem_.getStart(robot).data(), *g = problem_.getGoal(robot).data();
+    double squared = 0.;  // a robot's space is a real vector space: its distance is Euclidean
+    for (unsigned int k = 0; k < d; ++k)
+        squared += (g[k] - s[k]) * (g[k] - s[k]);
+    TimedPath path(d, s);
+    path.appendMotion(s, g, MultiRobotPlan::stepsFor(std::sqrt(squared), mrsi.getResolution()));
+    path.trimArrival();
+    if (const std::optional<bool> swept = body.sweepValid(s, g))
+        return *swept ? std::optional<TimedPath>(std::move(path)) : std::nullopt;
+    // Every timestep of the path, as a planner's motions are checked, a batch at a time (the kinds with a
+    // batch kernel check it at once).
+    constexpr std::size_t BATCH = 64;
+    std::vector<double> configs(BATCH * d);
+    TimedPath::Cursor cursor(path);
+    const std::size_t arrival = path.getArrival();
+    for (std::size_t t = 1; t <= arrival; t += BATCH)
+    {
+        if (ptc)
+            return std::nullopt;
+        const std::size_t count = std::min(BATCH, arrival + 1 - t);
+        for (std::size_t k = 0; k < count; ++k)
+            cursor.get(t + k, configs.data() + k * d);
+        if (!body.allValid(configs.data(), count))
+            return std::nullopt;
+    }
+    return path;
 }

@@ -8,6 +8,7 @@
 #include <ompl/base/PlannerTerminationCondition.h>
 
 #include <cstdint>
+#include <optional>
 
 namespace ompl_parc
 {
@@ -15,12 +16,15 @@ namespace ompl_parc
 
         Each call plans in a fresh single-robot space seeded by \e seed (so calls are independent, may run
         concurrently, and repeat exactly), with an OMPL planner from the allocator (RRTConnect by default),
-        then shortcuts the path with OMPL's simplifier (bounded effort, as the authors do). */
+        then shortcuts the path with OMPL's simplifier (bounded effort, as the authors do). With \e straightFirst
+        (ArcSettings::straightInitial, ARC's default) a robot whose straight motion is valid takes it without a
+        planner; scenario generators that define tasks by the planned paths (ConflictingPairs) leave it off, so
+        their tasks stay what they were. */
     class InitialPlanner
     {
       public:
         explicit InitialPlanner(const MultiRobotProblem &problem, bool simplify = true,
-                                ompl::base::PlannerAllocator allocator = {});
+                                ompl::base::PlannerAllocator allocator = {}, bool straightFirst = false);
 
         /** \brief Plan robot \e robot from its start to its goal; on success fill \e path (laid on the
             timestep grid as waypoints, from start to goal) and return true; false if \e ptc fired first. */
@@ -28,8 +32,14 @@ namespace ompl_parc
                   TimedPath &path) const;
 
       private:
+        /** \brief The straight motion from \e robot's start to its goal, laid on the grid, if it is valid at every
+            timestep (or, for kinds that can tell, at every point: Robot::sweepValid()); std::nullopt if not, or if
+            \e ptc fired. */
+        std::optional<TimedPath> straightPath(std::size_t robot,
+                                              const ompl::base::PlannerTerminationCondition &ptc) const;
+
         const MultiRobotProblem &problem_;
-        bool simplify_;
+        bool simplify_, straightFirst_;
         ompl::base::PlannerAllocator allocator_;
     };
 }  // namespace ompl_parc

@@ -85,7 +85,7 @@ bool ompl_parc::RepairLoop::planInitial(const ob::PlannerTerminationCondition &p
     for (std::size_t r = 0; r < planned_.size(); ++r)
         if (!planned_[r])
             robots.push_back(r);
-    const InitialPlanner planner(problem_, options_.settings.simplifyInitial);
+    const InitialPlanner planner(problem_, options_.settings.simplifyInitial, {}, options_.settings.straightInitial);
     const std::size_t n = planned_.size();
     OrTaskStatistics stats;
     // A robot counts as planned once, at its first path (local OR may find several).
