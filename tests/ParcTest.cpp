@@ -139,6 +139,45 @@ TEST(BatchDetection, SettledPairsAreScannedAgainAfterAnInvalidation)
     }
 }
 
+TEST(BatchDetection, ChunkedScansFindTheSameBatchWithAnyWorkerCount)
+{
+    // 80 robots have 3160 pairs: W = 2 and 3 workers claim 8 and 12 chunks of them per round, W = 1 scans one. A
+    // round's candidates are each pair's first conflict in the window, however the pairs are shared, so the batch
+    // must not depend on W (same capacity and horizon).
+    const auto problem = scenarios::createMobileCircle(80);
+    const auto &si = *problem.getSpaceInformation();
+    std::vector<std::unique_ptr<WorkerPool>> pools;
+    for (unsigned int w : {1u, 2u, 3u})
+        pools.push_back(std::make_unique<WorkerPool>(w));
+    std::mt19937 rng(83);
+    for (int k = 0; k < 6; ++k)
+    {
+        const auto plan = test::randomWalkPlan(si, rng, 0.04);
+        const auto all = test::allConflicts(si, plan);
+        std::vector<std::vector<BatchEntry>> batches;
+        for (const auto &pool : pools)
+        {
+            ConflictDetector detector(si);
+            const RepairCache cache;
+            batches.push_back(BatchDetector(detector, *pool, 100, 12, true)
+                                  .detect(plan, cache, 200, ob::plannerNonTerminatingCondition())
+                                  .entries);
+        }
+        ASSERT_FALSE(all.empty());
+        ASSERT_FALSE(batches[0].empty());
+        EXPECT_EQ(batches[0].front().conflict, all.front());
+        for (std::size_t w = 1; w < batches.size(); ++w)
+        {
+            ASSERT_EQ(batches[w].size(), batches[0].size()) << "W = " << w + 1;
+            for (std::size_t e = 0; e < batches[0].size(); ++e)
+            {
+                EXPECT_EQ(batches[w][e].conflict, batches[0][e].conflict) << "W = " << w + 1;
+                EXPECT_EQ(batches[w][e].team, batches[0][e].team) << "W = " << w + 1;
+            }
+        }
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(WorkersHorizons, BatchDetection,
                          testing::Combine(testing::Values(1u, 2u, 3u, 4u), testing::Values(1u, 4u),
                                           testing::Values(1u, 7u, 50u, 400u), testing::Bool()),

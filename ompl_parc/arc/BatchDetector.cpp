@@ -6,6 +6,10 @@
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <limits>
+#include <numeric>
 
 ompl_parc::BatchDetector::BatchDetector(ConflictDetector &detector, WorkerPool &pool, std::size_t horizon,
                                         std::size_t capacity, bool optimistic)
@@ -14,15 +18,22 @@ ompl_parc::BatchDetector::BatchDetector(ConflictDetector &detector, WorkerPool &
       horizon_(horizon),
       capacity_(capacity),
       optimistic_(optimistic),
-      live_(pool.getWorkerCount()),
+      live_(detector.getPairCount()),
       isLive_(detector.getPairCount(), 1)
 {
     if (horizon == 0)
         throw ompl::Exception("BatchDetector", "the horizon must be at least 1 timestep");
     if (capacity == 0)
         throw ompl::Exception("BatchDetector", "a batch must hold at least one conflict");
-    for (std::size_t p = 0; p < detector_.getPairCount(); ++p)
-        live_[p % live_.size()].push_back(p);  // round-robin, as in the paper
+    std::iota(live_.begin(), live_.end(), std::size_t{0});
+}
+
+std::size_t ompl_parc::BatchDetector::chunkSize(std::size_t live) const
+{
+    constexpr std::size_t CHUNKS_PER_WORKER = 4, MIN_CHUNK = 256;
+    const std::size_t workers = pool_.getWorkerCount();
+    const std::size_t share = std::max<std::size_t>(1, (live + workers - 1) / workers);
+    return std::min(share, std::max(MIN_CHUNK, live / (CHUNKS_PER_WORKER * workers)));
 }
 
 void ompl_parc::BatchDetector::invalidate(std::size_t robot, std::size_t timestep)
@@ -36,7 +47,7 @@ void ompl_parc::BatchDetector::invalidate(std::size_t robot, std::size_t timeste
             if (!isLive_[p])
             {
                 isLive_[p] = 1;
-                live_[p % live_.size()].push_back(p);
+                live_.push_back(p);
             }
         }
 }
@@ -51,16 +62,31 @@ ompl_parc::DetectedBatch ompl_parc::BatchDetector::detect(const MultiRobotPlan &
     double projected = 0.;
     const auto skip = [&batch](std::size_t i, std::size_t j) { return batch.skipPair(i, j); };
     const std::size_t makespan = plan.getMakespan();
-    std::vector<std::vector<Conflict>> found(live_.size());
-    std::vector<std::size_t> resume(live_.size());
+    const std::size_t workers = pool_.getWorkerCount();
+    std::vector<std::vector<Conflict>> found(workers);
+    std::vector<std::size_t> resume(workers);
+    std::vector<std::vector<std::size_t>> chunks(workers);
     for (std::size_t from = 0; from <= makespan && !batch.full() && !ptc;)
     {
         const std::size_t to = std::min<std::size_t>(from + horizon_, makespan + 1);
+        const std::size_t chunk = chunkSize(live_.size());
+        std::atomic<std::size_t> next{0};
         const auto cpu = pool_.run(
             [&](unsigned int worker)
             {
                 const StopSignal::Scope scope(ptc);
-                found[worker] = detector_.scan(plan, live_[worker], from, to, earliestOnly, skip, &resume[worker]);
+                found[worker].clear();
+                resume[worker] = std::numeric_limits<std::size_t>::max();
+                for (std::size_t first; (first = next.fetch_add(chunk, std::memory_order_relaxed)) < live_.size();)
+                {
+                    auto &pairs = chunks[worker];
+                    pairs.assign(live_.begin() + static_cast<std::ptrdiff_t>(first),
+                                 live_.begin() + static_cast<std::ptrdiff_t>(std::min(first + chunk, live_.size())));
+                    std::size_t resumeAt = std::numeric_limits<std::size_t>::max();
+                    const auto conflicts = detector_.scan(plan, pairs, from, to, earliestOnly, skip, &resumeAt);
+                    found[worker].insert(found[worker].end(), conflicts.begin(), conflicts.end());
+                    resume[worker] = std::min(resume[worker], resumeAt);
+                }
             });
         // The coordinator merges the candidates in temporal order and grows the batch.
         const double mergeStart = StageClock::threadCpu();
@@ -79,15 +105,15 @@ ompl_parc::DetectedBatch ompl_parc::BatchDetector::detect(const MultiRobotPlan &
         // is): stretches every pair is known to be clear of (disc pairs are scanned ahead) cost no rounds.
         from = std::max(to, *std::min_element(resume.begin(), resume.end()));
     }
-    for (auto &pairs : live_)  // settled pairs leave until one of their robots changes
-        pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
-                                   [&](std::size_t p)
-                                   {
-                                       if (!detector_.isSettled(plan, p))
-                                           return false;
-                                       isLive_[p] = 0;
-                                       return true;
-                                   }),
-                    pairs.end());
+    // Settled pairs leave until one of their robots changes.
+    live_.erase(std::remove_if(live_.begin(), live_.end(),
+                               [&](std::size_t p)
+                               {
+                                   if (!detector_.isSettled(plan, p))
+                                       return false;
+                                   isLive_[p] = 0;
+                                   return true;
+                               }),
+                live_.end());
     return {batch.getEntries(), projected};
 }

@@ -21,8 +21,10 @@ namespace ompl_parc
 
     /** \brief P-ARC's distributed conflict detection (paper §III-B).
 
-        The robot pairs are dealt round-robin to the pool's W workers. In rounds, every worker scans its
-        pairs over the next H timesteps (the synchronisation horizon) for each pair's first conflict, skipping
+        The robot pairs are shared by the pool's W workers: the paper deals them round-robin; here each round's
+        pairs are cut into chunks that the workers claim as they finish the previous one (about 4 per worker,
+        at least 256 pairs each, at most an even share: W chunks for small teams), so a worker with slow pairs
+        or on a slower core is not waited for. In rounds, the workers scan their pairs over the next H timesteps (the synchronisation horizon) for each pair's first conflict, skipping
         pairs the batch no longer needs; the coordinator then merges the candidates in temporal order, grows
         each into its robot set through the repair cache and offers it to the ConflictBatch, until the batch
         is full (W conflicts in the paper, RepairLoopOptions::batchPerWorker x W here) or the plan ends. Workers
@@ -57,12 +59,15 @@ namespace ompl_parc
         WorkerPool &pool_;
         std::size_t horizon_, capacity_;
         bool optimistic_;
-        /** \brief Per worker, its pairs (round-robin: pair p is worker p mod W's) that are not settled: a pair known
-            to be conflict-free to its end leaves the list at the end of a detect() call, and comes back when one of
-            its robots is invalidated. A call costs O(pairs still in play), not O(all pairs): at 1024 robots
-            there are 523 776 pairs, of which a few thousand have a conflict or a changed robot. */
-        std::vector<std::vector<std::size_t>> live_;
-        /** \brief Per pair, 1 while it is in its worker's live list. */
+        /** \brief The pair count of one chunk of \e live pairs in play (see the class documentation). */
+        std::size_t chunkSize(std::size_t live) const;
+
+        /** \brief The pairs that are not settled: a pair known to be conflict-free to its end leaves the list at the
+            end of a detect() call, and comes back when one of its robots is invalidated. A call costs O(pairs
+            still in play), not O(all pairs): at 1024 robots there are 523 776 pairs, of which a few thousand have
+            a conflict or a changed robot. */
+        std::vector<std::size_t> live_;
+        /** \brief Per pair, 1 while it is in the live list. */
         std::vector<char> isLive_;
     };
 }  // namespace ompl_parc

@@ -4,6 +4,7 @@
 #include "ompl_parc/collision/CapsuleCollision.h"
 
 #include <algorithm>
+#include <numeric>
 #include <limits>
 
 namespace
@@ -31,14 +32,13 @@ ompl_parc::ConflictDetector::ConflictDetector(const MultiRobotSpaceInformation &
 {
     for (std::size_t r = 0; r < robots_; ++r)
         discs_.push_back(dynamic_cast<const DiscRobot *>(si.getRobot(r).get()));
+    // Sized once: at 256 robots the pair arrays are megabytes of fresh pages, whose faults are most of the cost.
+    pairs_.reserve(robots_ * (robots_ - 1) / 2);
     for (std::size_t i = 0; i < robots_; ++i)
         for (std::size_t j = i + 1; j < robots_; ++j)
             pairs_.emplace_back(i, j);
     frontier_.assign(pairs_.size(), 0);
     knownConflict_.assign(pairs_.size(), 0);
-    allPairs_.resize(pairs_.size());
-    for (std::size_t p = 0; p < pairs_.size(); ++p)
-        allPairs_[p] = p;
 }
 
 void ompl_parc::ConflictDetector::setSegmentLength(std::size_t segmentLength)
@@ -96,6 +96,11 @@ const ompl_parc::ConflictDetector::SweptBounds &ompl_parc::ConflictDetector::swe
 
 std::optional<ompl_parc::Conflict> ompl_parc::ConflictDetector::findEarliest(const MultiRobotPlan &plan)
 {
+    if (allPairs_.size() != pairs_.size())  // only the callers of findEarliest() need the list
+    {
+        allPairs_.resize(pairs_.size());
+        std::iota(allPairs_.begin(), allPairs_.end(), std::size_t{0});
+    }
     const auto conflicts = scan(plan, allPairs_, 0, plan.getMakespan() + 1, true);
     if (conflicts.empty())
         return std::nullopt;

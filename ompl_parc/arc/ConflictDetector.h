@@ -144,6 +144,7 @@ namespace ompl_parc
             invalidation reaches it); char, not bool, so that workers write their own pairs' entries safely. */
         std::vector<char> knownConflict_;
         std::vector<std::pair<std::size_t, std::size_t>> pairs_;
+        /** \brief Every pair index, for findEarliest(); built at its first call. */
         std::vector<std::size_t> allPairs_;
     };
 }  // namespace ompl_parc
