@@ -32,6 +32,8 @@ std::size_t ompl_parc::BatchDetector::chunkSize(std::size_t live) const
 {
     constexpr std::size_t CHUNKS_PER_WORKER = 4, MIN_CHUNK = 256;
     const std::size_t workers = pool_.getWorkerCount();
+    if (workers == 1)
+        return std::max<std::size_t>(1, live);  // one scan over all pairs, as ARC's
     const std::size_t share = std::max<std::size_t>(1, (live + workers - 1) / workers);
     return std::min(share, std::max(MIN_CHUNK, live / (CHUNKS_PER_WORKER * workers)));
 }

@@ -23,7 +23,7 @@ namespace ompl_parc
 
         The robot pairs are shared by the pool's W workers: the paper deals them round-robin; here each round's
         pairs are cut into chunks that the workers claim as they finish the previous one (about 4 per worker,
-        at least 256 pairs each, at most an even share: W chunks for small teams), so a worker with slow pairs
+        at least 256 pairs each, at most an even share: W chunks for small teams; one for W = 1), so a worker with slow pairs
         or on a slower core is not waited for. In rounds, the workers scan their pairs over the next H timesteps (the synchronisation horizon) for each pair's first conflict, skipping
         pairs the batch no longer needs; the coordinator then merges the candidates in temporal order, grows
         each into its robot set through the repair cache and offers it to the ConflictBatch, until the batch
