@@ -7,8 +7,9 @@ namespace ompl_parc
 {
     /** \brief Parallel ARC (Motes, Morales, Amato): ARC's three stages spread over W worker threads.
 
-        Initial paths are handed out to workers as they free up; conflict detection splits the robot pairs
-        round-robin over the workers, each scanning the next H timesteps (the synchronisation horizon)
+        Initial paths are handed out to workers as they free up; in conflict detection the workers claim chunks
+        of the robot pairs as they free up (the paper deals them round-robin), each scanning the next H timesteps
+        (the synchronisation horizon)
         before the coordinator merges the candidates in temporal order into a batch of robot-disjoint
         (optimistically) independent conflicts (ConflictBatch), up to W of them; the batch is repaired
         concurrently with ARC's conflict resolution, idle workers running extra randomised attempts of

@@ -42,7 +42,8 @@ namespace
                 // Map one huge page more than needed and keep the 2 MiB-aligned part: only aligned 2 MiB ranges
                 // can be huge pages.
                 const std::size_t length = (bytes + hugePage - 1) / hugePage * hugePage;
-                void *raw = mmap(nullptr, length + hugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+                void *raw =
+                    mmap(nullptr, length + hugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
                 if (raw != MAP_FAILED)
                 {
                     const auto start = reinterpret_cast<std::uintptr_t>(raw);
@@ -122,7 +123,7 @@ ompl_parc::CompositeStateSpace::CompositeStateSpace(const std::vector<ob::StateS
 
 ob::State *ompl_parc::CompositeStateSpace::placeState(char *block, void *shared) const
 {
-    *reinterpret_cast<void **>(block) = shared;
+    new (block) void *(shared);
     auto *state = new (block + stateOffset_) StateType();
     state->components = reinterpret_cast<ob::State **>(block + componentsOffset_);
     auto *robots = reinterpret_cast<ob::RealVectorStateSpace::StateType *>(block + robotStatesOffset_);
@@ -162,6 +163,8 @@ void ompl_parc::CompositeStateSpace::allocStates(std::size_t count, ob::State **
 
 void ompl_parc::CompositeStateSpace::freeState(ob::State *state) const
 {
+    if (state == nullptr)  // e.g. a path whose allocation threw before its states were in place
+        return;
     if (!singleBlock_)
         return ob::CompoundStateSpace::freeState(state);
     char *block = reinterpret_cast<char *>(state) - stateOffset_;

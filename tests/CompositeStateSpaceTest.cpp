@@ -94,7 +94,8 @@ TEST(CompositeStateSpace, RejectsBadInput)
 namespace
 {
     /** Writes a value unique to (state, coordinate) into every state, then reads all back: states that overlap or
-        share values would show here (and under ASan as out-of-bounds writes). */
+        share values would show here (and, for allocations below 512 KiB, which are not mapped on their own, under ASan
+       as out-of-bounds writes). */
     void expectDisjointStates(const ob::StateSpace &space, const std::vector<ob::State *> &states)
     {
         const unsigned int dims = space.getDimension();

@@ -40,7 +40,8 @@ TEST(InitialPlanner, AValidStraightMotionIsTakenAsIs)
 {
     // Discs (checked by their swept capsule) and planar arms (checked at every timestep): each robot alone can
     // move straight, so each path is the straight line laid on the grid, timestep for timestep.
-    for (const auto &problem : {test::twoDiscs({-5., -5.}, {5., -4.}, {-5., 5.}, {5., 5.}), scenarios::createPlanarCross(4)})
+    for (const auto &problem :
+         {test::twoDiscs({-5., -5.}, {5., -4.}, {-5., 5.}, {5., 5.}), scenarios::createPlanarCross(4)})
     {
         const auto &si = *problem.getSpaceInformation();
         const InitialPlanner planner(problem, true, {}, true);

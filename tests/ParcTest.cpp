@@ -141,9 +141,10 @@ TEST(BatchDetection, SettledPairsAreScannedAgainAfterAnInvalidation)
 
 TEST(BatchDetection, ChunkedScansFindTheSameBatchWithAnyWorkerCount)
 {
-    // 80 robots have 3160 pairs: W = 2 and 3 workers claim 8 and 12 chunks of them per round, W = 1 scans one. A
-    // round's candidates are each pair's first conflict in the window, however the pairs are shared, so the batch
-    // must not depend on W (same capacity and horizon).
+    // 80 robots have 3160 pairs: W = 2 and 3 workers claim 8 and 13 chunks of them in the first round, W = 1 scans
+    // one. A round's candidates are each pair's first conflict in the window (with capacity 1: the conflicts at the
+    // earliest timestep), however the pairs are shared, so the batch must not depend on W (same capacity and
+    // horizon); with capacity 1 it is the earliest conflict.
     const auto problem = scenarios::createMobileCircle(80);
     const auto &si = *problem.getSpaceInformation();
     std::vector<std::unique_ptr<WorkerPool>> pools;
@@ -154,25 +155,29 @@ TEST(BatchDetection, ChunkedScansFindTheSameBatchWithAnyWorkerCount)
     {
         const auto plan = test::randomWalkPlan(si, rng, 0.04);
         const auto all = test::allConflicts(si, plan);
-        std::vector<std::vector<BatchEntry>> batches;
-        for (const auto &pool : pools)
-        {
-            ConflictDetector detector(si);
-            const RepairCache cache;
-            batches.push_back(BatchDetector(detector, *pool, 100, 12, true)
-                                  .detect(plan, cache, 200, ob::plannerNonTerminatingCondition())
-                                  .entries);
-        }
         ASSERT_FALSE(all.empty());
-        ASSERT_FALSE(batches[0].empty());
-        EXPECT_EQ(batches[0].front().conflict, all.front());
-        for (std::size_t w = 1; w < batches.size(); ++w)
+        for (const std::size_t capacity : {1, 12})
         {
-            ASSERT_EQ(batches[w].size(), batches[0].size()) << "W = " << w + 1;
-            for (std::size_t e = 0; e < batches[0].size(); ++e)
+            std::vector<std::vector<BatchEntry>> batches;
+            for (const auto &pool : pools)
             {
-                EXPECT_EQ(batches[w][e].conflict, batches[0][e].conflict) << "W = " << w + 1;
-                EXPECT_EQ(batches[w][e].team, batches[0][e].team) << "W = " << w + 1;
+                ConflictDetector detector(si);
+                const RepairCache cache;
+                batches.push_back(BatchDetector(detector, *pool, 100, capacity, true)
+                                      .detect(plan, cache, 200, ob::plannerNonTerminatingCondition())
+                                      .entries);
+            }
+            ASSERT_FALSE(batches[0].empty());
+            EXPECT_EQ(batches[0].front().conflict, all.front());
+            EXPECT_EQ(batches[0].size() == 1, capacity == 1);
+            for (std::size_t w = 1; w < batches.size(); ++w)
+            {
+                ASSERT_EQ(batches[w].size(), batches[0].size()) << "W = " << w + 1 << ", capacity " << capacity;
+                for (std::size_t e = 0; e < batches[0].size(); ++e)
+                {
+                    EXPECT_EQ(batches[w][e].conflict, batches[0][e].conflict) << "W = " << w + 1;
+                    EXPECT_EQ(batches[w][e].team, batches[0][e].team) << "W = " << w + 1;
+                }
             }
         }
     }

@@ -23,17 +23,18 @@ namespace ompl_parc
 
         The robot pairs are shared by the pool's W workers: the paper deals them round-robin; here each round's
         pairs are cut into chunks that the workers claim as they finish the previous one (about 4 per worker,
-        at least 256 pairs each, at most an even share: W chunks for small teams; one for W = 1), so a worker with slow pairs
-        or on a slower core is not waited for. In rounds, the workers scan their pairs over the next H timesteps (the synchronisation horizon) for each pair's first conflict, skipping
-        pairs the batch no longer needs; the coordinator then merges the candidates in temporal order, grows
-        each into its robot set through the repair cache and offers it to the ConflictBatch, until the batch
-        is full (W conflicts in the paper, RepairLoopOptions::batchPerWorker x W here) or the plan ends. Workers
-        scan only the pairs still in play (not known conflict-free to their end since their robots last changed).
-        A round starts at the first timestep after the previous round's window that some pair still needs
-        checked, so stretches known to be clear (disc pairs are scanned ahead from the plan's pieces) cost no
-        rounds. The frontiers of the shared ConflictDetector carry over between calls. With a capacity of one (W =
-        1) the batch is exactly the sequential earliest conflict (ARC's detection: its scans stop at the first
-        timestep with a conflict), and robot-set growth happens here for ARC and P-ARC alike. */
+        at least 256 pairs each, at most an even share: W chunks for small teams; one for W = 1), so a worker with slow
+       pairs or on a slower core is not waited for. In rounds, the workers scan their pairs over the next H timesteps
+       (the synchronisation horizon) for each pair's first conflict, skipping pairs the batch no longer needs; the
+       coordinator then merges the candidates in temporal order, grows each into its robot set through the repair cache
+       and offers it to the ConflictBatch, until the batch is full (W conflicts in the paper,
+       RepairLoopOptions::batchPerWorker x W here) or the plan ends. Workers scan only the pairs still in play (not
+       known conflict-free to their end since their robots last changed). A round starts at the first timestep after the
+       previous round's window that some pair still needs checked, so stretches known to be clear (disc pairs are
+       scanned ahead from the plan's pieces) cost no rounds. The frontiers of the shared ConflictDetector carry over
+       between calls. With a capacity of one (W = 1) the batch is exactly the sequential earliest conflict (ARC's
+       detection: its scans stop at the first timestep with a conflict), and robot-set growth happens here for ARC and
+       P-ARC alike. */
     class BatchDetector
     {
       public:

@@ -1,6 +1,7 @@
 #include "ompl_parc/arc/InitialPlanner.h"
 
 #include "ompl_parc/model/MultiRobotPlan.h"
+#include "ompl_parc/robots/RakeMotionValidator.h"
 #include "ompl_parc/util/OmplCompat.h"
 #include "ompl_parc/util/SeededPathSimplifier.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
@@ -26,7 +28,7 @@ bool ompl_parc::InitialPlanner::plan(std::size_t robot, const ob::PlannerTermina
                                      std::uint_fast32_t seed, TimedPath &path) const
 {
     if (straightFirst_)
-        if (auto straight = straightPath(robot, ptc))
+        if (auto straight = straightPath(robot))
         {
             path = std::move(*straight);
             return true;
@@ -59,36 +61,27 @@ bool ompl_parc::InitialPlanner::plan(std::size_t robot, const ob::PlannerTermina
     return true;
 }
 
-std::optional<ompl_parc::TimedPath> ompl_parc::InitialPlanner::straightPath(std::size_t robot,
-                                                                         const ob::PlannerTerminationCondition &ptc) const
+std::optional<ompl_parc::TimedPath> ompl_parc::InitialPlanner::straightPath(std::size_t robot) const
 {
     const auto &mrsi = *problem_.getSpaceInformation();
     const Robot &body = *mrsi.getRobot(robot);
-    const unsigned int d = body.getDimension();
-    const double *s = problem_.getStart(robot).data(), *g = problem_.getGoal(robot).data();
+    const auto *validator =
+        dynamic_cast<const RakeMotionValidator *>(body.getSpaceInformation()->getMotionValidator().get());
+    const auto &s = problem_.getStart(robot), &g = problem_.getGoal(robot);
+    if (validator == nullptr || !body.isValid(s.data()))
+        return std::nullopt;
     double squared = 0.;  // a robot's space is a real vector space: its distance is Euclidean
-    for (unsigned int k = 0; k < d; ++k)
+    for (std::size_t k = 0; k < s.size(); ++k)
         squared += (g[k] - s[k]) * (g[k] - s[k]);
-    TimedPath path(d, s);
-    path.appendMotion(s, g, MultiRobotPlan::stepsFor(std::sqrt(squared), mrsi.getResolution()));
+    const std::size_t steps = MultiRobotPlan::stepsFor(std::sqrt(squared), mrsi.getResolution());
+    // The robot's own motion check at the path's timesteps (swept where the kind can, else sampled in rake order).
+    if (steps > std::numeric_limits<unsigned int>::max())
+        return std::nullopt;
+    const std::optional<bool> valid = validator->checkStraight(s, g, static_cast<unsigned int>(steps));
+    if (!valid || !*valid)
+        return std::nullopt;
+    TimedPath path(body.getDimension(), s.data());
+    path.appendMotion(s.data(), g.data(), steps);
     path.trimArrival();
-    if (const std::optional<bool> swept = body.sweepValid(s, g))
-        return *swept ? std::optional<TimedPath>(std::move(path)) : std::nullopt;
-    // Every timestep of the path, as a planner's motions are checked, a batch at a time (the kinds with a
-    // batch kernel check it at once).
-    constexpr std::size_t BATCH = 64;
-    std::vector<double> configs(BATCH * d);
-    TimedPath::Cursor cursor(path);
-    const std::size_t arrival = path.getArrival();
-    for (std::size_t t = 1; t <= arrival; t += BATCH)
-    {
-        if (ptc)
-            return std::nullopt;
-        const std::size_t count = std::min(BATCH, arrival + 1 - t);
-        for (std::size_t k = 0; k < count; ++k)
-            cursor.get(t + k, configs.data() + k * d);
-        if (!body.allValid(configs.data(), count))
-            return std::nullopt;
-    }
     return path;
 }

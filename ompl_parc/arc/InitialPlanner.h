@@ -32,11 +32,10 @@ namespace ompl_parc
                   TimedPath &path) const;
 
       private:
-        /** \brief The straight motion from \e robot's start to its goal, laid on the grid, if it is valid at every
-            timestep (or, for kinds that can tell, at every point: Robot::sweepValid()); std::nullopt if not, or if
-            \e ptc fired. */
-        std::optional<TimedPath> straightPath(std::size_t robot,
-                                              const ompl::base::PlannerTerminationCondition &ptc) const;
+        /** \brief The straight motion from \e robot's start to its goal, laid on the grid, if the start is valid and
+            the robot's motion validator accepts the motion at every timestep (or, for kinds that can tell, at every
+            point: Robot::sweepValid()); std::nullopt if not, or if the planning stopped during the check. */
+        std::optional<TimedPath> straightPath(std::size_t robot) const;
 
         const MultiRobotProblem &problem_;
         bool simplify_, straightFirst_;

@@ -56,6 +56,16 @@ bool ompl_parc::RakeMotionValidator::checkBatched(const std::vector<double> &fro
     return valid && (count == 0 || flush());
 }
 
+std::optional<bool> ompl_parc::RakeMotionValidator::checkStraight(const std::vector<double> &from,
+                                                                  const std::vector<double> &to, unsigned int n) const
+{
+    if (!check_)
+        return std::nullopt;
+    if (const std::optional<bool> swept = sweep_ ? sweep_(from.data(), to.data()) : std::nullopt)
+        return *swept;
+    return checkBatched(from, to, n);
+}
+
 bool ompl_parc::RakeMotionValidator::checkMotion(const ompl::base::State *s1, const ompl::base::State *s2) const
 {
     // s1 is assumed valid, as in OMPL
@@ -67,8 +77,7 @@ bool ompl_parc::RakeMotionValidator::checkMotion(const ompl::base::State *s1, co
         thread_local std::vector<double> from, to;
         space.copyToReals(from, s1);
         space.copyToReals(to, s2);
-        const std::optional<bool> swept = sweep_ ? sweep_(from.data(), to.data()) : std::nullopt;
-        valid = swept ? *swept : checkBatched(from, to, n);
+        valid = *checkStraight(from, to, n);
     }
     else
     {

@@ -51,6 +51,13 @@ namespace ompl_parc
 
         bool checkMotion(const ompl::base::State *s1, const ompl::base::State *s2) const override;
 
+        /** \brief The check of checkMotion() on real values: the straight motion from \e from (valid) to \e to in \e n
+            segments, swept at once where the kind can, else sampled batch by batch in rake order; std::nullopt
+            without a batch check. It leaves OMPL's motion counters alone (they are not atomic), so threads may
+            share the validator: a robot's own, in ARC's initial stage. */
+        std::optional<bool> checkStraight(const std::vector<double> &from, const std::vector<double> &to,
+                                          unsigned int n) const;
+
       private:
         /** \brief The samples of a motion of \e n segments (n >= 2): calls \e check with each rake level's fractions'
             numerators j (1 .. n - 1), in order, until it returns false. */
