@@ -10,7 +10,6 @@
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 
 namespace ob = ompl::base;
@@ -70,10 +69,7 @@ std::optional<ompl_parc::TimedPath> ompl_parc::InitialPlanner::straightPath(std:
     const auto &s = problem_.getStart(robot), &g = problem_.getGoal(robot);
     if (validator == nullptr || !body.isValid(s.data()))
         return std::nullopt;
-    double squared = 0.;  // a robot's space is a real vector space: its distance is Euclidean
-    for (std::size_t k = 0; k < s.size(); ++k)
-        squared += (g[k] - s[k]) * (g[k] - s[k]);
-    const std::size_t steps = MultiRobotPlan::stepsFor(std::sqrt(squared), mrsi.getResolution());
+    const std::size_t steps = MultiRobotPlan::stepsFor(body.distance(s.data(), g.data()), mrsi.getResolution());
     // The robot's own motion check at the path's timesteps (swept where the kind can, else sampled in rake order).
     if (steps > std::numeric_limits<unsigned int>::max())
         return std::nullopt;

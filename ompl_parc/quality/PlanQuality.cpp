@@ -1,7 +1,5 @@
 #include "ompl_parc/quality/PlanQuality.h"
 
-#include <ompl/base/ScopedState.h>
-
 #include <algorithm>
 #include <vector>
 
@@ -26,15 +24,7 @@ std::size_t ompl_parc::PlanQuality::straightLineSteps(const MultiRobotSpaceInfor
     std::vector<double> a(r.getDimension()), b(r.getDimension());
     plan.getConfig(robot, from, a.data());
     plan.getConfig(robot, std::min(to, plan.getArrival(robot)), b.data());
-    return MultiRobotPlan::stepsFor(distance(r, a.data(), b.data()), plan.getResolution());
-}
-
-double ompl_parc::PlanQuality::distance(const Robot &robot, const double *a, const double *b)
-{
-    ompl::base::ScopedState<> sa(robot.getStateSpace()), sb(robot.getStateSpace());
-    robot.configToState(a, sa.get());
-    robot.configToState(b, sb.get());
-    return robot.getStateSpace()->distance(sa.get(), sb.get());
+    return MultiRobotPlan::stepsFor(r.distance(a.data(), b.data()), plan.getResolution());
 }
 
 void ompl_parc::PlanQuality::addProperties(std::map<std::string, std::string> &properties) const

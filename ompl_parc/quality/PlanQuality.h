@@ -38,10 +38,6 @@ namespace ompl_parc
                                              std::size_t robot, std::size_t from = 0,
                                              std::size_t to = static_cast<std::size_t>(-1));
 
-        /** \brief The distance between configurations \e a and \e b of \e robot in its state space: the metric the
-            bounds and the timestep grid use. */
-        static double distance(const Robot &robot, const double *a, const double *b);
-
         /** \brief Write makespan, sum_of_costs, their bounds and ratios as PlannerData / benchmark properties
             ("makespan INTEGER", ..., "sum_of_costs_ratio REAL"). */
         void addProperties(std::map<std::string, std::string> &properties) const;

@@ -238,7 +238,7 @@ bool ompl_parc::PlanSmoother::motionValid(std::size_t robot, const double *from,
 
 double ompl_parc::PlanSmoother::distance(std::size_t robot, const double *a, const double *b) const
 {
-    return PlanQuality::distance(*si_->getRobot(robot), a, b);
+    return si_->getRobot(robot)->distance(a, b);
 }
 
 double ompl_parc::PlanSmoother::pathLength(const MultiRobotPlan &plan, std::size_t robot, std::size_t t1,

@@ -3,6 +3,7 @@
 #include "ompl_parc/collision/CapsuleCollision.h"
 #include "ompl_parc/robots/RakeMotionValidator.h"
 
+#include <ompl/base/ScopedState.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/util/Exception.h>
 
@@ -98,6 +99,14 @@ bool ompl_parc::Robot::selfCollides(const CollisionBody &body) const
             return true;
     }
     return false;
+}
+
+double ompl_parc::Robot::distance(const double *a, const double *b) const
+{
+    ob::ScopedState<> sa(getStateSpace()), sb(getStateSpace());
+    configToState(a, sa.get());
+    configToState(b, sb.get());
+    return getStateSpace()->distance(sa.get(), sb.get());
 }
 
 void ompl_parc::Robot::stateToConfig(const ob::State *state, double *q) const

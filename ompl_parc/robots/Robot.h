@@ -90,6 +90,10 @@ namespace ompl_parc
         /** \brief True if the two bodies (of this robot) overlap in any listed self-collision pair. */
         bool selfCollides(const CollisionBody &body) const;
 
+        /** \brief The distance between configurations \e a and \e b in the robot's state space: the metric the
+            timestep grid, the plans' bounds and the straight initial paths use. */
+        double distance(const double *a, const double *b) const;
+
         void stateToConfig(const ompl::base::State *state, double *q) const;
         void configToState(const double *q, ompl::base::State *state) const;
 
