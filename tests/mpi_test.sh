@@ -60,8 +60,10 @@ else
     echo "ok:   0.5 s limit: every rank stopped, the slowest after $late s"
 fi
 
-# A rank that throws: exit 1 with its message, no hang (the timeout would say 124).
-mpi crash --scenario mobile_cross --robots 16 --fail-rank 1
+# A rank that throws: exit 1 with its message, no hang (the timeout would say 124). The other rank works on a problem
+# it cannot solve before the failure arrives (as above): an exact solution claimed first would rightly win the race,
+# and Mobile Cross 16 is now solved in milliseconds, so it raced the injected failure.
+mpi crash --scenario panda_cage --robots 16 --task 3 --time-limit 30 --fail-rank 1
 rc=$?
 if [ $rc -ne 1 ] || ! grep -q '^ompl_parc_mpi: rank 1 failed: failure injected by --fail-rank 1$' "$tmp/crash.out"; then
     fail "a failing rank: exit $rc"
