@@ -87,6 +87,12 @@ po::variables_map ompl_parc::tools::parse(int argc, char **argv, const po::optio
     return vm;
 }
 
+void ompl_parc::tools::printError(const std::string &tool, const std::string &message)
+{
+    std::cout.flush();
+    std::cerr << (tool + ": " + message + "\n") << std::flush;
+}
+
 int ompl_parc::tools::runTool(const std::string &tool, const std::function<int()> &body)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
@@ -100,7 +106,7 @@ int ompl_parc::tools::runTool(const std::string &tool, const std::function<int()
     }
     catch (const std::exception &e)
     {
-        std::cerr << tool << ": " << e.what() << std::endl;
+        printError(tool, e.what());
         return EXIT_BAD_INPUT;
     }
 }

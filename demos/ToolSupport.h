@@ -43,6 +43,11 @@ namespace ompl_parc::tools
         int argc, char **argv, const boost::program_options::options_description &options,
         const boost::program_options::positional_options_description &positional = {});
 
+    /** \brief Writes "tool: message" and a line break to stderr in one write, after flushing stdout: where both
+        streams land in one file (a terminal, `2>&1`, mpirun forwarding each separately) the line never comes out
+        split by, or into, the tool's other output. */
+    void printError(const std::string &tool, const std::string &message);
+
     /** \brief Runs \e body, turning any exception into a one-line "tool: reason" on stderr and exit code 2
         (after --help or --version: exit code 0). */
     int runTool(const std::string &tool, const std::function<int()> &body);

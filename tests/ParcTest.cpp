@@ -382,8 +382,10 @@ TEST(Parc, SixteenWorkersOnPandaCage16StopPromptly)
 
 TEST(Parc, StopsPromptlyAtResolution1e8)
 {
-    // At 1e8 timesteps per unit one motion check spans a billion states: motion checks poll the stop too.
-    const auto swap = test::twoDiscs({-5, 0}, {5, 0}, {5, 0}, {-5, 0}, true, 1e8);
+    // At 1e8 timesteps per unit one motion check spans a billion states: motion checks poll the stop too. The two
+    // discs can never pass each other (no solution exists), so every run ends by the stop: initial paths, detection
+    // and repairs of ever larger windows, each with motion checks over up to a billion states, until the limit.
+    const auto swap = test::corridorSwap(1e8);
     for (unsigned int workers : {1u, 2u})
     {
         PARC parc(swap.getSpaceInformation());
@@ -391,11 +393,7 @@ TEST(Parc, StopsPromptlyAtResolution1e8)
         parc.setSeed(1);
         parc.setProblemDefinition(swap.createProblemDefinition());
         const auto start = ompl::time::now();
-        const auto status = parc.solve(ob::timedPlannerTerminationCondition(0.3));
+        EXPECT_EQ(parc.solve(ob::timedPlannerTerminationCondition(0.3)), ob::PlannerStatus::TIMEOUT);
         EXPECT_LT(ompl::time::seconds(ompl::time::now() - start), 0.3 + test::promptReturn());
-        if (status == ob::PlannerStatus::EXACT_SOLUTION)  // a lucky draw (the time caps depend on the machine)
-            EXPECT_TRUE(SolutionValidator(swap).validate(parc.getPlan()).valid);
-        else
-            EXPECT_EQ(status, ob::PlannerStatus::TIMEOUT);
     }
 }

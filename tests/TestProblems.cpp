@@ -29,6 +29,20 @@ ompl_parc::MultiRobotProblem ompl_parc::test::twoDiscs(std::vector<double> start
                              {std::move(startA), std::move(startB)}, {std::move(goalA), std::move(goalB)}, "two_discs");
 }
 
+ompl_parc::MultiRobotProblem ompl_parc::test::corridorSwap(double resolution)
+{
+    auto env = std::make_shared<Environment>();
+    env->addBox2D("above", 0., 5.3, 20., 9.4);
+    env->addBox2D("below", 0., -5.3, 20., 9.4);
+    ompl::base::RealVectorBounds bounds(2);
+    bounds.setLow(-10.);
+    bounds.setHigh(10.);
+    std::vector<RobotPtr> team = {std::make_shared<DiscRobot>("a", env, 0.5, bounds),
+                                  std::make_shared<DiscRobot>("b", env, 0.5, bounds)};
+    return MultiRobotProblem(std::make_shared<MultiRobotSpaceInformation>(team, resolution), {{-5., 0.}, {5., 0.}},
+                             {{5., 0.}, {-5., 0.}}, "corridor_swap");
+}
+
 std::vector<double> ompl_parc::test::straightLine(const std::vector<double> &a, const std::vector<double> &b,
                                                   double resolution)
 {

@@ -20,6 +20,10 @@ namespace ompl_parc::test
     MultiRobotProblem twoDiscs(std::vector<double> startA, std::vector<double> goalA, std::vector<double> startB,
                                std::vector<double> goalB, bool wall = false, double resolution = 128.);
 
+    /** \brief Two discs (radius 0.5) swapping ends of a closed corridor 1.2 wide (x from -10 to 10): each alone goes
+        straight, together they can never pass, so no solution exists and a planner can only run until it is stopped. */
+    MultiRobotProblem corridorSwap(double resolution = 128.);
+
     /** \brief Give \e planner the problem, set it up and solve with a time limit of \e limit seconds. */
     ompl::base::PlannerStatus solveWith(ompl::base::Planner &planner, const MultiRobotProblem &problem,
                                         double limit = 60.);

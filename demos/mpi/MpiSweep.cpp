@@ -22,7 +22,7 @@ int ompl_parc::tools::MpiSweep::run(const std::string &path)
     if (!error.empty())
     {
         if (session_.isRoot())
-            std::cerr << "ompl_parc_mpi: " << error << std::endl;
+            printError("ompl_parc_mpi", error);
         return EXIT_BAD_INPUT;
     }
 

@@ -242,8 +242,8 @@ namespace
         if (race.getFailedRank() >= 0)
         {
             printClaims(race);
-            std::cerr << "ompl_parc_mpi: rank " << race.getFailedRank()
-                      << " failed: " << race.getClaims()[race.getFailedRank()].reason << std::endl;
+            tools::printError("ompl_parc_mpi", "rank " + std::to_string(race.getFailedRank()) +
+                                                   " failed: " + race.getClaims()[race.getFailedRank()].reason);
             return tools::EXIT_FAILED;
         }
         std::cout << "status     "
@@ -305,7 +305,7 @@ namespace
         if (!error.empty())
         {
             if (mpi.isRoot())
-                std::cerr << "ompl_parc_mpi: " << error << std::endl;
+                tools::printError("ompl_parc_mpi", error);
             return tools::EXIT_BAD_INPUT;
         }
         const auto &si = racer.problem->getSpaceInformation();
@@ -341,7 +341,7 @@ namespace
         }
         catch (const std::exception &e)
         {
-            std::cerr << "ompl_parc_mpi: " << e.what() << std::endl;
+            tools::printError("ompl_parc_mpi", e.what());
             return tools::EXIT_BAD_INPUT;
         }
     }
@@ -357,7 +357,7 @@ int main(int argc, char **argv)
     }
     catch (const std::exception &e)
     {
-        std::cerr << "ompl_parc_mpi: " << e.what() << std::endl;
+        tools::printError("ompl_parc_mpi", e.what());
         return tools::EXIT_BAD_INPUT;
     }
     const MpiSession &mpi = *session;
@@ -402,7 +402,7 @@ int main(int argc, char **argv)
             catch (const std::exception &e)
             {
                 // Past the agreed set-up the other ranks may be waiting for this one: end them all.
-                std::cerr << "ompl_parc_mpi: rank " << mpi.getRank() << ": " << e.what() << std::endl;
+                tools::printError("ompl_parc_mpi", "rank " + std::to_string(mpi.getRank()) + ": " + e.what());
                 mpi.abort(tools::EXIT_FAILED);
             }
         });
