@@ -4,9 +4,13 @@
    rewiring. Anytime: the arrival (s) reached within a 1 s budget with k-nearest rewiring. Both for our
    ompl_parc::STRRTstar and, built against OMPL >= 1.6, OMPL's ompl::geometric::STRRTstar on the same problems
    (both report their solutions to the same intermediate solution callback; both draw from OMPL's global seed).
-   PPSTRRT: the PrioritizedSTRRTSolver on the whole of Mobile Cross 4 and 8 (given order). Counters report the
-   success fraction and the mean arrival (s) or makespan (timesteps). */
+   PPSTRRT: the PrioritizedSTRRTSolver on the whole of Mobile Cross 4 and 8 and of generated rooms 8 instances 0 and
+   1 (given order). Counters report the success fraction and the mean arrival (s) or makespan (timesteps).
+   Nearest: one nearest-neighbour query in a tree of N space-time states (2D discs' space, times in [0, 50], drawn
+   uniformly) by OMPL's NearestNeighborsLinear through the space's distance (what ST-RRT* used) and by
+   SpaceTimeNearestNeighbors (what it uses now); same answers, side by side. */
 #include "ompl_parc/planners/STRRTstar.h"
+#include "ompl_parc/planners/SpaceTimeNearestNeighbors.h"
 #include "ompl_parc/planners/SpaceTime.h"
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
 #include "ompl_parc/scenarios/Scenarios.h"
@@ -14,6 +18,7 @@
 
 #include <benchmark/benchmark.h>
 #include <ompl/base/ScopedState.h>
+#include <ompl/datastructures/NearestNeighborsLinear.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/util/Console.h>
 
@@ -125,10 +130,10 @@ namespace
         }
     }
 
-    void ppstrrt(benchmark::State &state, std::size_t robots)
+    void ppstrrt(benchmark::State &state, const std::string &scenario, std::size_t robots, unsigned int task)
     {
         ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
-        const auto problem = scenarios::createMobileCross(robots);
+        const auto problem = scenarios::createScenario(scenario, robots, 128., task);
         Subproblem whole;
         for (std::size_t i = 0; i < robots; ++i)
         {
@@ -153,6 +158,51 @@ namespace
         state.counters["makespan_steps"] = solved > 0. ? makespan / solved : 0.;
     }
 
+    /** A tree element of the nearest-neighbour benchmarks: a space-time state. */
+    struct NearestElement
+    {
+        ob::State *state;
+    };
+
+    /** One nearest query per iteration in a tree of state.range(0) uniform space-time states (discs' 2D space). */
+    template <typename Structure>
+    void nearest(benchmark::State &state)
+    {
+        auto component = std::make_shared<ob::RealVectorStateSpace>(2);
+        component->setBounds(-10., 10.);
+        const auto space = std::make_shared<spacetime::SpaceTimeStateSpace>(component);
+        space->setTimeBounds(0., 50.);
+        space->updateEpsilon();
+        ompl::RNG rng(1);
+        const auto draw = [&]
+        {
+            auto *s = space->allocState()->as<ob::CompoundState>();
+            for (int k = 0; k < 2; ++k)
+                s->as<ob::RealVectorStateSpace::StateType>(0)->values[k] = rng.uniformReal(-10., 10.);
+            s->as<ob::TimeStateSpace::StateType>(1)->position = rng.uniformReal(0., 50.);
+            return NearestElement{s};
+        };
+        std::vector<NearestElement> elements(static_cast<std::size_t>(state.range(0))), queries(1024);
+        std::generate(elements.begin(), elements.end(), draw);
+        std::generate(queries.begin(), queries.end(), draw);
+        std::unique_ptr<ompl::NearestNeighbors<const NearestElement *>> tree;
+        if constexpr (std::is_same_v<Structure, SpaceTimeNearestNeighbors<const NearestElement *>>)
+            tree = std::make_unique<Structure>(*space, [](const NearestElement *const &e) { return e->state; });
+        else
+            tree = std::make_unique<Structure>();
+        tree->setDistanceFunction([&](const NearestElement *a, const NearestElement *b)
+                                  { return space->distance(a->state, b->state); });
+        for (const auto &e : elements)
+            tree->add(&e);
+        std::size_t q = 0;
+        for (auto _ : state)
+            benchmark::DoNotOptimize(tree->nearest(&queries[q++ % queries.size()]));
+        for (auto &e : elements)
+            space->freeState(e.state);
+        for (auto &e : queries)
+            space->freeState(e.state);
+    }
+
     /** Our ST-RRT*, and OMPL's where this OMPL has one. */
     const bool registered = []
     {
@@ -163,5 +213,9 @@ namespace
     }();
 }  // namespace
 
-BENCHMARK_CAPTURE(ppstrrt, MobileCross4, std::size_t{4})->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(ppstrrt, MobileCross8, std::size_t{8})->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(ppstrrt, MobileCross4, "mobile_cross", std::size_t{4}, 0u)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(ppstrrt, MobileCross8, "mobile_cross", std::size_t{8}, 0u)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(ppstrrt, Rooms8_0, "rooms", std::size_t{8}, 0u)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(ppstrrt, Rooms8_1, "rooms", std::size_t{8}, 1u)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(nearest, ompl::NearestNeighborsLinear<const NearestElement *>)->Arg(1000)->Arg(10000);
+BENCHMARK_TEMPLATE(nearest, SpaceTimeNearestNeighbors<const NearestElement *>)->Arg(1000)->Arg(10000);

@@ -1,0 +1,160 @@
+#include "ompl_parc/planners/SpaceTime.h"
+#include "ompl_parc/planners/SpaceTimeNearestNeighbors.h"
+
+#include <gtest/gtest.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/spaces/SO2StateSpace.h>
+#include <ompl/datastructures/NearestNeighborsLinear.h>
+#include <ompl/util/Exception.h>
+
+#include <limits>
+#include <memory>
+#include <random>
+#include <vector>
+
+using ompl_parc::SpaceTimeNearestNeighbors;
+using ompl_parc::spacetime::SpaceTimeStateSpace;
+namespace ob = ompl::base;
+
+namespace
+{
+    struct Element
+    {
+        ob::State *state;
+    };
+
+    using Flat = SpaceTimeNearestNeighbors<const Element *>;
+
+    /** \brief States of a space-time space on a coarse grid (so that equal times, equal distances and speed-test
+        boundaries occur), freed with the space. */
+    class Elements
+    {
+      public:
+        Elements(std::shared_ptr<SpaceTimeStateSpace> space, std::size_t count, std::mt19937 &rng)
+            : space_(std::move(space))
+        {
+            const unsigned int d = space_->getSubspace(0)->getDimension();
+            std::uniform_int_distribution<int> cell(-8, 8), tick(0, 40);
+            for (std::size_t i = 0; i < count; ++i)
+            {
+                auto *state = space_->allocState()->as<ob::CompoundState>();
+                for (unsigned int k = 0; k < d; ++k)
+                    state->as<ob::RealVectorStateSpace::StateType>(0)->values[k] = 0.5 * cell(rng);
+                state->as<ob::TimeStateSpace::StateType>(1)->position = 0.25 * tick(rng);
+                elements_.push_back(std::make_unique<Element>(Element{state}));
+            }
+        }
+
+        ~Elements()
+        {
+            for (const auto &e : elements_)
+                space_->freeState(e->state);
+        }
+
+        const Element *operator[](std::size_t i) const { return elements_[i].get(); }
+        std::size_t size() const { return elements_.size(); }
+
+      private:
+        std::shared_ptr<SpaceTimeStateSpace> space_;
+        std::vector<std::unique_ptr<Element>> elements_;
+    };
+
+    std::shared_ptr<SpaceTimeStateSpace> spaceOf(unsigned int dimension, double vMax, double timeWeight)
+    {
+        auto component = std::make_shared<ob::RealVectorStateSpace>(dimension);
+        component->setBounds(-4., 4.);
+        auto space = std::make_shared<SpaceTimeStateSpace>(component, vMax, timeWeight);
+        space->setTimeBounds(0., 10.);
+        space->updateEpsilon();
+        return space;
+    }
+
+    /** \brief Both structures give the same answers, element for element and in the same order. */
+    void expectSameAnswers(const ompl::NearestNeighbors<const Element *> &linear, const Flat &flat,
+                           const Elements &queries)
+    {
+        ASSERT_EQ(linear.size(), flat.size());
+        std::vector<const Element *> a, b;
+        linear.list(a);
+        flat.list(b);
+        EXPECT_EQ(a, b);
+        for (std::size_t q = 0; q < queries.size(); ++q)
+        {
+            EXPECT_EQ(linear.nearest(queries[q]), flat.nearest(queries[q])) << "query " << q;
+            for (std::size_t k : {1, 5, 40, 1000})
+            {
+                linear.nearestK(queries[q], k, a);
+                flat.nearestK(queries[q], k, b);
+                EXPECT_EQ(a, b) << "query " << q << ", k " << k;
+            }
+            for (double r : {0., 0.5, 2., std::numeric_limits<double>::infinity()})
+            {
+                linear.nearestR(queries[q], r, a);
+                flat.nearestR(queries[q], r, b);
+                EXPECT_EQ(a, b) << "query " << q << ", radius " << r;
+            }
+        }
+    }
+}  // namespace
+
+/* The flat structure must be a drop-in for NearestNeighborsLinear with the space-time distance: the same nearest
+   element (the first of equally near ones, also when every distance is infinite), the same sorted neighbourhoods,
+   through additions, removals and a clear, for several dimensions, speeds and weights. */
+TEST(SpaceTimeNearestNeighbors, AnswersAsLinearSearchWithTheSpaceTimeDistance)
+{
+    std::mt19937 rng(7);
+    for (const auto &[dimension, vMax, timeWeight] :
+         {std::tuple{2u, 1., 0.5}, std::tuple{3u, 0.5, 0.2}, std::tuple{7u, 2., 0.8}, std::tuple{1u, 1., 1.}})
+    {
+        SCOPED_TRACE(dimension);
+        const auto space = spaceOf(dimension, vMax, timeWeight);
+        ASSERT_TRUE(Flat::supports(*space));
+        const Elements elements(space, 300, rng), queries(space, 60, rng);
+        ompl::NearestNeighborsLinear<const Element *> linear;
+        linear.setDistanceFunction([&](const Element *a, const Element *b)
+                                   { return space->distance(a->state, b->state); });
+        Flat flat(*space, [](const Element *const &e) { return e->state; });
+
+        EXPECT_THROW(flat.nearest(queries[0]), ompl::Exception);
+        for (std::size_t i = 0; i < 150; ++i)
+        {
+            linear.add(elements[i]);
+            flat.add(elements[i]);
+        }
+        flat.add(std::vector<const Element *>{elements[0], elements[1]});  // duplicates, as a tree may not hold
+        linear.add(std::vector<const Element *>{elements[0], elements[1]});
+        expectSameAnswers(linear, flat, queries);
+
+        for (std::size_t i = 150; i < elements.size(); ++i)
+        {
+            linear.add(elements[i]);
+            flat.add(elements[i]);
+        }
+        for (std::size_t i = 0; i < elements.size(); i += 3)
+            EXPECT_EQ(linear.remove(elements[i]), flat.remove(elements[i]));
+        EXPECT_TRUE(flat.remove(elements[0]));  // the second copy
+        EXPECT_TRUE(linear.remove(elements[0]));
+        EXPECT_FALSE(flat.remove(elements[0]));
+        EXPECT_FALSE(linear.remove(elements[0]));
+        expectSameAnswers(linear, flat, queries);
+
+        // Time bounds moved (as ST-RRT* does between batches): the speed test's epsilon changes with them.
+        space->setTimeBounds(0., 1e4);
+        space->updateEpsilon();
+        expectSameAnswers(linear, flat, queries);
+
+        flat.clear();
+        linear.clear();
+        EXPECT_EQ(flat.size(), 0u);
+        flat.add(elements[5]);
+        linear.add(elements[5]);
+        expectSameAnswers(linear, flat, queries);
+    }
+}
+
+TEST(SpaceTimeNearestNeighbors, NeedsAEuclideanSpaceComponent)
+{
+    const auto circle = std::make_shared<SpaceTimeStateSpace>(std::make_shared<ob::SO2StateSpace>());
+    EXPECT_FALSE(Flat::supports(*circle));
+    EXPECT_THROW(Flat(*circle, [](const Element *const &e) { return e->state; }), ompl::Exception);
+}
