@@ -66,6 +66,7 @@ namespace ompl_parc
             coordinates_.clear();
             times_.clear();
             byTime_.clear();
+            byTimeIndex_.clear();
         }
 
         bool reportsSortedResults() const override { return true; }
@@ -76,9 +77,14 @@ namespace ompl_parc
             data_.push_back(data);
             coordinates_.insert(coordinates_.end(), element.q, element.q + dimension_);
             times_.push_back(element.time);
-            const auto at = std::upper_bound(byTime_.begin(), byTime_.end(), element.time,
-                                             [](double t, const Entry &e) { return t < e.time; });
-            byTime_.insert(at, {element.time, data_.size() - 1});
+            const auto at = static_cast<std::ptrdiff_t>(
+                std::upper_bound(byTimeIndex_.begin(), byTimeIndex_.end(), element.time,
+                                 [this](double t, std::size_t i) { return t < times_[i]; }) -
+                byTimeIndex_.begin());
+            byTimeIndex_.insert(byTimeIndex_.begin() + at, data_.size() - 1);
+            const auto entry = byTime_.begin() + at * static_cast<std::ptrdiff_t>(stride());
+            const auto time = byTime_.insert(entry, element.time);
+            byTime_.insert(time + 1, element.q, element.q + dimension_);
         }
 
         void add(const std::vector<T> &data) override
@@ -97,46 +103,39 @@ namespace ompl_parc
                     times_.erase(times_.begin() + static_cast<std::ptrdiff_t>(i));
                     const auto first = coordinates_.begin() + static_cast<std::ptrdiff_t>(i * dimension_);
                     coordinates_.erase(first, first + static_cast<std::ptrdiff_t>(dimension_));
-                    byTime_.erase(
-                        std::find_if(byTime_.begin(), byTime_.end(), [i](const Entry &e) { return e.index == i; }));
-                    for (Entry &e : byTime_)
-                        e.index -= e.index > i ? 1 : 0;
+                    const auto at = std::find(byTimeIndex_.begin(), byTimeIndex_.end(), i) - byTimeIndex_.begin();
+                    byTimeIndex_.erase(byTimeIndex_.begin() + at);
+                    const auto entry = byTime_.begin() + at * static_cast<std::ptrdiff_t>(stride());
+                    byTime_.erase(entry, entry + static_cast<std::ptrdiff_t>(stride()));
+                    for (std::size_t &j : byTimeIndex_)
+                        j -= j > i ? 1 : 0;
                     return true;
                 }
             return false;
         }
 
-        /** \brief The first of the nearest elements in insertion order (as NearestNeighborsLinear), found by
-            walking out from the query's time in both directions: the time term alone bounds the distance from
-            below (the space term is not negative, and rounding is monotonic), so a side ends once its next
-            element is farther in time alone than the nearest distance found. */
+        /** \brief The first of the nearest elements in insertion order (as NearestNeighborsLinear). The elements
+            are searched in time order, up and then down from the query's time: the time term alone bounds the
+            distance from below (the space term is not negative, and rounding is monotonic), so each direction
+            ends at the first element farther in time alone than the nearest distance found. */
         T nearest(const T &data) const override
         {
             if (data_.empty())
                 throw ompl::Exception("No elements found in nearest neighbors data structure");
             const Query query = makeQuery(data);
-            const auto split = std::lower_bound(byTime_.begin(), byTime_.end(), query.time,
-                                                [](const Entry &e, double t) { return e.time < t; });
-            std::size_t up = static_cast<std::size_t>(split - byTime_.begin()), down = up;  // next: up, down - 1
-            std::size_t best = data_.size();
-            double least = std::numeric_limits<double>::infinity();
-            const auto bound = [&](std::size_t k)
-            { return query.timeWeight * std::fabs(byTime_[k].time - query.time); };
-            while (true)
-            {
-                const bool upOpen = up < byTime_.size() && !(bound(up) > least),
-                           downOpen = down > 0 && !(bound(down - 1) > least);
-                if (!upOpen && !downOpen)
-                    break;
-                const std::size_t k = upOpen && (!downOpen || bound(up) <= bound(down - 1)) ? up++ : --down;
-                const std::size_t i = byTime_[k].index;
-                if (const double d = distance(i, query); d < least || (d == least && i < best))
-                {
-                    best = i;
-                    least = d;
-                }
-            }
-            return data_[best];
+            const auto split =
+                static_cast<std::size_t>(std::lower_bound(byTimeIndex_.begin(), byTimeIndex_.end(), query.time,
+                                                          [this](std::size_t i, double t) { return times_[i] < t; }) -
+                                         byTimeIndex_.begin());
+            Best best{data_.size(), std::numeric_limits<double>::infinity()};
+            // The element just before the query's time first: a near one found early shortens both walks.
+            if (split > 0)
+                consider(split - 1, query, best);
+            for (std::size_t k = split; k < data_.size() && consider(k, query, best); ++k)
+                ;
+            for (std::size_t k = split; k-- > 0 && consider(k, query, best);)
+                ;
+            return data_[best.index];
         }
 
         void nearestK(const T &data, std::size_t k, std::vector<T> &nbh) const override
@@ -175,13 +174,6 @@ namespace ompl_parc
         void list(std::vector<T> &data) const override { data = data_; }
 
       private:
-        /** \brief An element's time and insertion index, in byTime_. */
-        struct Entry
-        {
-            double time;
-            std::size_t index;
-        };
-
         /** \brief A query's coordinates and time, and the space's distance constants at query time. */
         struct Query
         {
@@ -208,21 +200,63 @@ namespace ompl_parc
                     EpsilonOf::get(space_)};
         }
 
-        /** \brief SpaceTimeStateSpace::distance(element i, query), with the same arithmetic. */
-        double distance(std::size_t i, const Query &query) const
+        /** \brief The nearest element found so far (its insertion index) and its distance. */
+        struct Best
         {
-            const double *c = coordinates_.data() + i * dimension_;
+            std::size_t index;
+            double distance;
+        };
+
+        /** \brief Doubles per element in byTime_: its time, then its coordinates. */
+        std::size_t stride() const { return dimension_ + 1; }
+
+        /** \brief Makes the element at \e k of the time order \e best if it is nearer, or as near and inserted
+            earlier; false if it, and so every element beyond it in time, is farther in time alone than \e best.
+            A far element skips the square root: a squared space term above the squared best distance (by a
+            margin far above rounding) cannot give a distance as small. */
+        bool consider(std::size_t k, const Query &query, Best &best) const
+        {
+            const double *entry = byTime_.data() + k * stride();
+            const double deltaTime = std::fabs(entry[0] - query.time);
+            if (query.timeWeight * deltaTime > best.distance)
+                return false;
+            const double squared = squaredSpace(entry + 1, query.q);
+            if (query.spaceWeight * query.spaceWeight * squared > best.distance * best.distance * (1. + 1e-9))
+                return true;
+            const double d = combine(squared, deltaTime, query);
+            const std::size_t i = byTimeIndex_[k];
+            if (d < best.distance || (d == best.distance && i < best.index))
+                best = {i, d};
+            return true;
+        }
+
+        /** \brief The squared Euclidean distance of \e c and \e q, summed in coordinate order as
+            RealVectorStateSpace::distance does. */
+        double squaredSpace(const double *c, const double *q) const
+        {
             double squared = 0.;
             for (std::size_t k = 0; k < dimension_; ++k)
             {
-                const double diff = c[k] - query.q[k];
+                const double diff = c[k] - q[k];
                 squared += diff * diff;
             }
+            return squared;
+        }
+
+        /** \brief SpaceTimeStateSpace::distance from the squared space distance and the time difference. */
+        static double combine(double squared, double deltaTime, const Query &query)
+        {
             const double deltaSpace = std::sqrt(squared);
-            const double deltaTime = std::fabs(times_[i] - query.time);
             if (deltaSpace / query.vMax > deltaTime + query.epsilon)
                 return std::numeric_limits<double>::infinity();
             return query.spaceWeight * deltaSpace + query.timeWeight * deltaTime;
+        }
+
+        /** \brief SpaceTimeStateSpace::distance(element i, query), with the same arithmetic. */
+        double distance(std::size_t i, const Query &query) const
+        {
+            return combine(squaredSpace(coordinates_.data() + i * dimension_, query.q),
+                           std::fabs(times_[i] - query.time), query);
         }
 
         void collect(const std::vector<std::size_t> &order, std::vector<T> &nbh) const
@@ -236,12 +270,16 @@ namespace ompl_parc
         const spacetime::SpaceTimeStateSpace &space_;
         StateOf stateOf_;
         std::size_t dimension_;
+        /** \brief The elements in insertion order. */
         std::vector<T> data_;
         /** \brief Element i's space coordinates at [i * dimension_, (i + 1) * dimension_). */
         std::vector<double> coordinates_;
         std::vector<double> times_;
-        /** \brief The elements ordered by time (equal times in insertion order). */
-        std::vector<Entry> byTime_;
+        /** \brief The elements ordered by time (equal times in insertion order): each one's time and coordinates
+            (stride() doubles), contiguous for the walks of nearest(). */
+        std::vector<double> byTime_;
+        /** \brief The insertion index of each element of byTime_. */
+        std::vector<std::size_t> byTimeIndex_;
     };
 }  // namespace ompl_parc
 
