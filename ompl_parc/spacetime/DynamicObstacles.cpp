@@ -19,7 +19,8 @@ ompl_parc::DynamicObstacles::DynamicObstacles(RobotPtr robot, double resolution)
         throw ompl::Exception("DynamicObstacles", "resolution must be positive");
 }
 
-void ompl_parc::DynamicObstacles::addPath(const Robot &other, const TimedPath &path)
+std::shared_ptr<const ompl_parc::BodyTrack> ompl_parc::DynamicObstacles::computeTrack(const Robot &other,
+                                                                                      const TimedPath &path)
 {
     if (!fits(path))
         throw ompl::Exception("DynamicObstacles", "a path of " + std::to_string(path.getArrival()) +
@@ -27,7 +28,7 @@ void ompl_parc::DynamicObstacles::addPath(const Robot &other, const TimedPath &p
     if (path.empty() || path.getDimension() != other.getDimension())
         throw ompl::Exception("DynamicObstacles",
                               "path of robot '" + other.getName() + "' is empty or not of its dimension");
-    BodyTrack track;
+    auto track = std::make_shared<BodyTrack>();
     CollisionBody body;
     std::vector<double> q(path.getDimension());
     TimedPath::Cursor cursor(path);
@@ -36,9 +37,21 @@ void ompl_parc::DynamicObstacles::addPath(const Robot &other, const TimedPath &p
         cursor.get(t, q.data());
         other.computeBody(q.data(), body);
         if (t == 0)
-            track.reserve(path.getArrival() + 1, body.size());
-        track.append(body);
+            track->reserve(path.getArrival() + 1, body.size());
+        track->append(body);
     }
+    return track;
+}
+
+void ompl_parc::DynamicObstacles::addPath(const Robot &other, const TimedPath &path)
+{
+    addTrack(computeTrack(other, path));
+}
+
+void ompl_parc::DynamicObstacles::addTrack(std::shared_ptr<const BodyTrack> track)
+{
+    if (!track || track->size() == 0)
+        throw ompl::Exception("DynamicObstacles", "an obstacle needs a track of at least one body");
     tracks_.push_back(std::move(track));
 }
 
@@ -49,8 +62,8 @@ bool ompl_parc::DynamicObstacles::isClear(const double *q, std::size_t timestep)
     thread_local CollisionBody body, other;
     robot_->computeBody(q, body);
     return std::none_of(tracks_.begin(), tracks_.end(),
-                        [&](const BodyTrack &track)
-                        { return track.collides(std::min(timestep, track.size() - 1), body, other); });
+                        [&](const auto &track)
+                        { return track->collides(std::min(timestep, track->size() - 1), body, other); });
 }
 
 std::optional<std::size_t> ompl_parc::DynamicObstacles::earliestHold(const double *q) const
@@ -62,10 +75,10 @@ std::optional<std::size_t> ompl_parc::DynamicObstacles::earliestHold(const doubl
     std::size_t hold = 0;
     for (const auto &track : tracks_)
     {
-        if (track.collides(track.size() - 1, body, other))
+        if (track->collides(track->size() - 1, body, other))
             return std::nullopt;  // it arrives there (or stays) and never leaves
-        for (std::size_t t = track.size() - 1; t-- > hold;)
-            if (track.collides(t, body, other))
+        for (std::size_t t = track->size() - 1; t-- > hold;)
+            if (track->collides(t, body, other))
             {
                 hold = t + 1;
                 break;

@@ -34,9 +34,17 @@ namespace ompl_parc
         /** \brief Whether addPath() takes \e path (its arrival is below MAX_TIMESTEPS). */
         static bool fits(const TimedPath &path) { return path.getArrival() < MAX_TIMESTEPS; }
 
-        /** \brief Add robot \e other following \e path (not empty, fits(); its bodies are computed for
-            timesteps 0..arrival). Throws ompl::Exception for a path that does not fit. */
+        /** \brief The bodies of robot \e other following \e path (not empty, fits()) at timesteps 0..arrival.
+            Throws ompl::Exception for a path that does not fit. */
+        static std::shared_ptr<const BodyTrack> computeTrack(const Robot &other, const TimedPath &path);
+
+        /** \brief Add robot \e other following \e path: addTrack(computeTrack(other, path)). */
         void addPath(const Robot &other, const TimedPath &path);
+
+        /** \brief Add an obstacle whose bodies computeTrack() gave. Prioritised planning shares one track per
+            planned robot among the obstacles of every robot planned after it, instead of computing (and
+            allocating: a fresh page costs a fault) the same bodies once per later robot. */
+        void addTrack(std::shared_ptr<const BodyTrack> track);
 
         std::size_t getPathCount() const { return tracks_.size(); }
 
@@ -52,7 +60,7 @@ namespace ompl_parc
         RobotPtr robot_;
         double resolution_;
         /** \brief tracks_[o]: obstacle o's bodies at timesteps 0..arrival; its last body is held afterwards. */
-        std::vector<BodyTrack> tracks_;
+        std::vector<std::shared_ptr<const BodyTrack>> tracks_;
     };
 
     using DynamicObstaclesPtr = std::shared_ptr<const DynamicObstacles>;

@@ -104,20 +104,21 @@ bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &
 
     std::vector<TimedPath> paths(team.size());
     std::vector<std::size_t> planned;
+    // Each robot's bodies along its path are computed once and shared by the obstacles of all robots after it.
+    std::vector<std::shared_ptr<const BodyTrack>> plannedTracks, otherTracks;
+    if (settings_.avoidOthers)
+        for (std::size_t o = 0; o < subproblem.others.size(); ++o)
+            otherTracks.push_back(
+                DynamicObstacles::computeTrack(*si.getRobot(subproblem.others[o]), subproblem.otherPaths[o]));
     for (std::size_t k : priorityOrder(team.size(), seed))
     {
         if (ptc)
             return false;
         auto obstacles = std::make_shared<DynamicObstacles>(team[k], si.getResolution());
-        for (std::size_t j : planned)
-        {
-            if (!DynamicObstacles::fits(paths[j]))
-                return false;  // too many timesteps to plan around (a resolution far above the usual)
-            obstacles->addPath(*team[j], paths[j]);
-        }
-        if (settings_.avoidOthers)
-            for (std::size_t o = 0; o < subproblem.others.size(); ++o)
-                obstacles->addPath(*si.getRobot(subproblem.others[o]), subproblem.otherPaths[o]);
+        for (const auto &track : plannedTracks)
+            obstacles->addTrack(track);
+        for (const auto &track : otherTracks)
+            obstacles->addTrack(track);
         const auto hold = obstacles->earliestHold(subproblem.goals[k].data());
         if (!obstacles->isClear(subproblem.starts[k].data(), 0) || !hold)
             return false;
@@ -127,6 +128,12 @@ bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &
                              subproblem.goals[k], *hold, subproblem.cappedTermination(ptc), mixSeed(seed, 0x57aa + k));
         if (paths[k].empty())
             return false;
+        if (planned.size() + 1 < team.size())
+        {
+            if (!DynamicObstacles::fits(paths[k]))
+                return false;  // too many timesteps to plan around (a resolution far above the usual)
+            plannedTracks.push_back(DynamicObstacles::computeTrack(*team[k], paths[k]));
+        }
         planned.push_back(k);
     }
 
