@@ -90,7 +90,7 @@ po::variables_map ompl_parc::tools::parse(int argc, char **argv, const po::optio
 void ompl_parc::tools::printError(const std::string &tool, const std::string &message)
 {
     std::cout.flush();
-    std::cerr << (tool + ": " + message + "\n") << std::flush;
+    std::cerr << (tool + ": " + message + "\n");  // std::cerr is unbuffered: one write
 }
 
 int ompl_parc::tools::runTool(const std::string &tool, const std::function<int()> &body)

@@ -22,9 +22,9 @@ namespace ompl_parc
 {
     /** \brief Exact nearest neighbours in a space-time space whose space component is a RealVectorStateSpace: the
         answers of OMPL's NearestNeighborsLinear (the only exact structure for a distance that is not a metric),
-        found faster. Coordinates and times sit in flat buffers and the distance is computed inline; nearest()
-        walks out from the query's time over the elements ordered by time and stops where the time difference
-        alone exceeds the nearest distance found.
+        found faster. The elements' times and coordinates sit in one flat buffer ordered by time, the distance is
+        computed inline, and nearest() walks out from the query's time, stopping where the weighted time
+        difference alone exceeds the nearest distance found.
 
         Why: ST-RRT* queries its trees once per extension, and a linear search through a distance function costs
         a std::function call, SpaceTimeStateSpace::distance and two more virtual distances per element: 85 % of a
@@ -33,9 +33,11 @@ namespace ompl_parc
         Same answers as NearestNeighborsLinear with SpaceTimeStateSpace::distance, in the same order: the same
         distance arithmetic (the Euclidean space distance summed in coordinate order, the speed test with the
         space's vMax and epsilon read at each query, so moved time bounds count), the first of equally near
-        elements in insertion order, the same sorts for nearestK() and nearestR(). Works with our space-time
-        space and OMPL's (>= 1.6). The distance function set on it is not used. Queries are const; only
-        nearestK() and nearestR() allocate. */
+        elements in insertion order (the first element where its distance is NaN), the same sorts for nearestK()
+        and nearestR(). Code that instantiates it should compile with -ffp-contract=off (as this project does),
+        or a fused multiply-add may round differently from OMPL's library. Works with our space-time space and
+        OMPL's (>= 1.6). The distance function set on it is not used. Queries are const; only nearestK() and
+        nearestR() allocate. */
     template <typename T>
     class SpaceTimeNearestNeighbors : public ompl::NearestNeighbors<T>
     {
@@ -43,11 +45,13 @@ namespace ompl_parc
         /** \brief The state of an element (called once per element added and once per query). */
         using StateOf = std::function<const ompl::base::State *(const T &)>;
 
-        /** \brief Whether \e space's space component is a plain RealVectorStateSpace (Euclidean distance). */
+        /** \brief Whether \e space is the space-time space itself (not a subclass, which might change the
+            distance) over a plain RealVectorStateSpace (Euclidean distance). */
         static bool supports(const spacetime::SpaceTimeStateSpace &space)
         {
             const auto &component = *space.getSubspace(0);
-            return typeid(component) == typeid(ompl::base::RealVectorStateSpace);
+            return typeid(space) == typeid(spacetime::SpaceTimeStateSpace) &&
+                   typeid(component) == typeid(ompl::base::RealVectorStateSpace);
         }
 
         /** \brief Elements of \e space (supports() must hold; throws ompl::Exception otherwise), whose states
@@ -57,34 +61,33 @@ namespace ompl_parc
         {
             if (!supports(space))
                 throw ompl::Exception("SpaceTimeNearestNeighbors",
-                                      "the space component must be a RealVectorStateSpace");
+                                      "needs the space-time space itself over a RealVectorStateSpace");
         }
 
         void clear() override
         {
             data_.clear();
-            coordinates_.clear();
-            times_.clear();
             byTime_.clear();
             byTimeIndex_.clear();
+            first_.clear();
         }
 
         bool reportsSortedResults() const override { return true; }
 
+        /** \brief Throws ompl::Exception for a state whose time is NaN (it has no place in the time order). */
         void add(const T &data) override
         {
             const Query element = makeQuery(data);
+            if (std::isnan(element.time))
+                throw ompl::Exception("SpaceTimeNearestNeighbors", "a state's time is NaN");
+            const std::size_t at = rankOf(element.time, true);
+            byTimeIndex_.insert(byTimeIndex_.begin() + static_cast<std::ptrdiff_t>(at), data_.size());
             data_.push_back(data);
-            coordinates_.insert(coordinates_.end(), element.q, element.q + dimension_);
-            times_.push_back(element.time);
-            const auto at = static_cast<std::ptrdiff_t>(
-                std::upper_bound(byTimeIndex_.begin(), byTimeIndex_.end(), element.time,
-                                 [this](double t, std::size_t i) { return t < times_[i]; }) -
-                byTimeIndex_.begin());
-            byTimeIndex_.insert(byTimeIndex_.begin() + at, data_.size() - 1);
-            const auto entry = byTime_.begin() + at * static_cast<std::ptrdiff_t>(stride());
-            const auto time = byTime_.insert(entry, element.time);
+            const auto time =
+                byTime_.insert(byTime_.begin() + static_cast<std::ptrdiff_t>(at * stride()), element.time);
             byTime_.insert(time + 1, element.q, element.q + dimension_);
+            if (data_.size() == 1)
+                keepFirst();
         }
 
         void add(const std::vector<T> &data) override
@@ -100,50 +103,45 @@ namespace ompl_parc
                 if (data_[i] == data)
                 {
                     data_.erase(data_.begin() + static_cast<std::ptrdiff_t>(i));
-                    times_.erase(times_.begin() + static_cast<std::ptrdiff_t>(i));
-                    const auto first = coordinates_.begin() + static_cast<std::ptrdiff_t>(i * dimension_);
-                    coordinates_.erase(first, first + static_cast<std::ptrdiff_t>(dimension_));
                     const auto at = std::find(byTimeIndex_.begin(), byTimeIndex_.end(), i) - byTimeIndex_.begin();
                     byTimeIndex_.erase(byTimeIndex_.begin() + at);
                     const auto entry = byTime_.begin() + at * static_cast<std::ptrdiff_t>(stride());
                     byTime_.erase(entry, entry + static_cast<std::ptrdiff_t>(stride()));
                     for (std::size_t &j : byTimeIndex_)
                         j -= j > i ? 1 : 0;
+                    if (i == 0)
+                        keepFirst();
                     return true;
                 }
             return false;
         }
 
-        /** \brief The first of the nearest elements in insertion order (as NearestNeighborsLinear). The elements
-            are searched in time order, up and then down from the query's time: the time term alone bounds the
-            distance from below (the space term is not negative, and rounding is monotonic), so each direction
-            ends at the first element farther in time alone than the nearest distance found. */
+        /** \brief The first of the nearest elements in insertion order (as NearestNeighborsLinear). Starting from
+            the first element (as Linear: where its distance is NaN, nothing compares below it), the others are searched
+           in time order, up and then down from the query's time: the weighted time difference alone bounds the distance
+           from below (the space term is not negative, and rounding is monotonic), so each direction ends at the first
+           element farther in time alone than the nearest distance found. */
         T nearest(const T &data) const override
         {
             if (data_.empty())
                 throw ompl::Exception("No elements found in nearest neighbors data structure");
             const Query query = makeQuery(data);
-            const auto split =
-                static_cast<std::size_t>(std::lower_bound(byTimeIndex_.begin(), byTimeIndex_.end(), query.time,
-                                                          [this](std::size_t i, double t) { return times_[i] < t; }) -
-                                         byTimeIndex_.begin());
-            Best best{data_.size(), std::numeric_limits<double>::infinity()};
-            // The element just before the query's time first: a near one found early shortens both walks.
-            if (split > 0)
-                consider(split - 1, query, best);
-            for (std::size_t k = split; k < data_.size() && consider(k, query, best); ++k)
-                ;
-            for (std::size_t k = split; k-- > 0 && consider(k, query, best);)
-                ;
+            Best best{0, distanceOf(first_.data(), query)};
+            if (std::isnan(best.distance))
+                return data_[0];  // Linear keeps its first element then: nothing compares below NaN
+            const std::size_t split = rankOf(query.time, false);
+            std::size_t up = split;
+            while (up < data_.size() && consider(up, query, best))
+                ++up;
+            std::size_t down = split;
+            while (down > 0 && consider(down - 1, query, best))
+                --down;
             return data_[best.index];
         }
 
         void nearestK(const T &data, std::size_t k, std::vector<T> &nbh) const override
         {
-            const Query query = makeQuery(data);
-            std::vector<double> d(data_.size());
-            for (std::size_t i = 0; i < data_.size(); ++i)
-                d[i] = distance(i, query);
+            const std::vector<double> d = allDistances(makeQuery(data));
             std::vector<std::size_t> order(data_.size());
             std::iota(order.begin(), order.end(), 0);
             const auto nearer = [&d](std::size_t a, std::size_t b) { return d[a] < d[b]; };
@@ -159,11 +157,10 @@ namespace ompl_parc
 
         void nearestR(const T &data, double radius, std::vector<T> &nbh) const override
         {
-            const Query query = makeQuery(data);
-            std::vector<double> d(data_.size());
+            const std::vector<double> d = allDistances(makeQuery(data));
             std::vector<std::size_t> within;
             for (std::size_t i = 0; i < data_.size(); ++i)
-                if ((d[i] = distance(i, query)) <= radius)
+                if (d[i] <= radius)
                     within.push_back(i);
             std::sort(within.begin(), within.end(), [&d](std::size_t a, std::size_t b) { return d[a] < d[b]; });
             collect(within, nbh);
@@ -179,6 +176,13 @@ namespace ompl_parc
         {
             const double *q;
             double time, spaceWeight, timeWeight, vMax, epsilon;
+        };
+
+        /** \brief The nearest element found so far (its insertion index) and its distance. */
+        struct Best
+        {
+            std::size_t index;
+            double distance;
         };
 
         /** \brief Reads the protected speed-test epsilon of either space-time space class (ours or OMPL's):
@@ -200,15 +204,24 @@ namespace ompl_parc
                     EpsilonOf::get(space_)};
         }
 
-        /** \brief The nearest element found so far (its insertion index) and its distance. */
-        struct Best
-        {
-            std::size_t index;
-            double distance;
-        };
-
         /** \brief Doubles per element in byTime_: its time, then its coordinates. */
         std::size_t stride() const { return dimension_ + 1; }
+
+        /** \brief The number of elements whose time is below \e time (\e after: not above it). */
+        std::size_t rankOf(double time, bool after) const
+        {
+            std::size_t low = 0, high = data_.size();
+            while (low < high)
+            {
+                const std::size_t middle = low + (high - low) / 2;
+                const double t = byTime_[middle * stride()];
+                if (t < time || (after && t == time))
+                    low = middle + 1;
+                else
+                    high = middle;
+            }
+            return low;
+        }
 
         /** \brief Makes the element at \e k of the time order \e best if it is nearer, or as near and inserted
             earlier; false if it, and so every element beyond it in time, is farther in time alone than \e best.
@@ -252,13 +265,34 @@ namespace ompl_parc
             return query.spaceWeight * deltaSpace + query.timeWeight * deltaTime;
         }
 
-        /** \brief SpaceTimeStateSpace::distance(element i, query), with the same arithmetic. */
-        double distance(std::size_t i, const Query &query) const
+        /** \brief SpaceTimeStateSpace::distance(element, query) with the same arithmetic, for an element's time
+            and coordinates at \e entry. */
+        double distanceOf(const double *entry, const Query &query) const
         {
-            return combine(squaredSpace(coordinates_.data() + i * dimension_, query.q),
-                           std::fabs(times_[i] - query.time), query);
+            return combine(squaredSpace(entry + 1, query.q), std::fabs(entry[0] - query.time), query);
         }
 
+        /** \brief Copies the first element's time and coordinates to first_ (none if empty). */
+        void keepFirst()
+        {
+            first_.clear();
+            if (data_.empty())
+                return;
+            const auto at = std::find(byTimeIndex_.begin(), byTimeIndex_.end(), std::size_t{0}) - byTimeIndex_.begin();
+            const auto entry = byTime_.begin() + at * static_cast<std::ptrdiff_t>(stride());
+            first_.assign(entry, entry + static_cast<std::ptrdiff_t>(stride()));
+        }
+
+        /** \brief The distance of every element to \e query, by insertion index. */
+        std::vector<double> allDistances(const Query &query) const
+        {
+            std::vector<double> d(data_.size());
+            for (std::size_t k = 0; k < data_.size(); ++k)
+                d[byTimeIndex_[k]] = distanceOf(byTime_.data() + k * stride(), query);
+            return d;
+        }
+
+        /** \brief The elements of insertion indices \e order, in that order. */
         void collect(const std::vector<std::size_t> &order, std::vector<T> &nbh) const
         {
             nbh.clear();
@@ -272,14 +306,13 @@ namespace ompl_parc
         std::size_t dimension_;
         /** \brief The elements in insertion order. */
         std::vector<T> data_;
-        /** \brief Element i's space coordinates at [i * dimension_, (i + 1) * dimension_). */
-        std::vector<double> coordinates_;
-        std::vector<double> times_;
         /** \brief The elements ordered by time (equal times in insertion order): each one's time and coordinates
             (stride() doubles), contiguous for the walks of nearest(). */
         std::vector<double> byTime_;
         /** \brief The insertion index of each element of byTime_. */
         std::vector<std::size_t> byTimeIndex_;
+        /** \brief The first element's time and coordinates: nearest() starts from it, as Linear does. */
+        std::vector<double> first_;
     };
 }  // namespace ompl_parc
 

@@ -7,6 +7,7 @@
 #include <ompl/datastructures/NearestNeighborsLinear.h>
 #include <ompl/util/Exception.h>
 
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <random>
@@ -150,6 +151,68 @@ TEST(SpaceTimeNearestNeighbors, AnswersAsLinearSearchWithTheSpaceTimeDistance)
         linear.add(elements[5]);
         expectSameAnswers(linear, flat, queries);
     }
+}
+
+/* Cases the grid above does not reach: every distance infinite (the first element inserted wins, as in Linear),
+   a speed test decided by the space's epsilon (read at each query, so moved time bounds count), NaN. */
+TEST(SpaceTimeNearestNeighbors, AnswersAsLinearSearchAtTheEdges)
+{
+    const auto space = spaceOf(2, 1., 0.5);
+    const auto state = [&](double x, double t)
+    {
+        auto *s = space->allocState()->as<ob::CompoundState>();
+        s->as<ob::RealVectorStateSpace::StateType>(0)->values[0] = x;
+        s->as<ob::RealVectorStateSpace::StateType>(0)->values[1] = 0.;
+        s->as<ob::TimeStateSpace::StateType>(1)->position = t;
+        return std::make_unique<Element>(Element{s});
+    };
+    // At the query's time but elsewhere, inserted latest time first: all unreachable from the query.
+    std::vector<std::unique_ptr<Element>> elements;
+    for (double t : {1.2, 1.1, 1.0})
+        elements.push_back(state(3. + t, t));
+    // 1e-4 farther than vMax reaches in the time between: infinite while epsilon is 1.2e-6 (time bounds 10),
+    // finite once it is 1.2e-3 (time bounds 1e4).
+    elements.push_back(state(1. + 1e-4, 2.));
+    const auto query = state(0., 1.), nan = state(std::nan(""), 1.), nanTime = state(0., std::nan(""));
+
+    ompl::NearestNeighborsLinear<const Element *> linear;
+    linear.setDistanceFunction([&](const Element *a, const Element *b) { return space->distance(a->state, b->state); });
+    Flat flat(*space, [](const Element *const &e) { return e->state; });
+    for (std::size_t i = 0; i < 3; ++i)
+    {
+        linear.add(elements[i].get());
+        flat.add(elements[i].get());
+    }
+    EXPECT_EQ(flat.nearest(query.get()), elements[0].get());
+    EXPECT_EQ(linear.nearest(query.get()), elements[0].get());
+    EXPECT_EQ(flat.nearest(nanTime.get()), elements[0].get());
+    EXPECT_EQ(linear.nearest(nanTime.get()), elements[0].get());
+    EXPECT_THROW(flat.add(nanTime.get()), ompl::Exception);  // no place in the time order
+
+    linear.add(elements[3].get());
+    flat.add(elements[3].get());
+    const Element *shifted = elements.back().get();
+    EXPECT_EQ(linear.nearest(query.get()), elements[0].get());  // 1e-4 too far: infinite, like the rest
+    EXPECT_EQ(flat.nearest(query.get()), elements[0].get());
+    space->setTimeBounds(0., 1e4);
+    space->updateEpsilon();
+    EXPECT_EQ(linear.nearest(query.get()), shifted);  // within epsilon now: the only finite distance
+    EXPECT_EQ(flat.nearest(query.get()), shifted);
+
+    // A NaN coordinate makes element 0's distance NaN when it is the query: Linear keeps element 0.
+    flat.clear();
+    linear.clear();
+    linear.add(nan.get());
+    flat.add(nan.get());
+    linear.add(elements[3].get());
+    flat.add(elements[3].get());
+    EXPECT_EQ(linear.nearest(query.get()), nan.get());
+    EXPECT_EQ(flat.nearest(query.get()), nan.get());
+
+    for (const auto &e : elements)
+        space->freeState(e->state);
+    for (const Element *e : {query.get(), nan.get(), nanTime.get()})
+        space->freeState(e->state);
 }
 
 TEST(SpaceTimeNearestNeighbors, NeedsAEuclideanSpaceComponent)

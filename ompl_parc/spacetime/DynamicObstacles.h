@@ -31,19 +31,21 @@ namespace ompl_parc
             megabytes of bodies; at resolution 1e8 one unit of motion is 1e8 timesteps). */
         static constexpr std::size_t MAX_TIMESTEPS = std::size_t{1} << 22;
 
-        /** \brief Whether addPath() takes \e path (its arrival is below MAX_TIMESTEPS). */
+        /** \brief Whether computeTrack() and addPath() take \e path (its arrival is below MAX_TIMESTEPS). */
         static bool fits(const TimedPath &path) { return path.getArrival() < MAX_TIMESTEPS; }
 
         /** \brief The bodies of robot \e other following \e path (not empty, fits()) at timesteps 0..arrival.
             Throws ompl::Exception for a path that does not fit. */
         static std::shared_ptr<const BodyTrack> computeTrack(const Robot &other, const TimedPath &path);
 
-        /** \brief Add robot \e other following \e path: addTrack(computeTrack(other, path)). */
+        /** \brief Add robot \e other following \e path: addTrack(computeTrack(other, path)); throws
+            ompl::Exception as computeTrack() does. */
         void addPath(const Robot &other, const TimedPath &path);
 
         /** \brief Add an obstacle whose bodies computeTrack() gave. Prioritised planning shares one track per
             planned robot among the obstacles of every robot planned after it, instead of computing (and
-            allocating: a fresh page costs a fault) the same bodies once per later robot. */
+            allocating: a fresh page costs a fault) the same bodies once per later robot. Throws ompl::Exception
+            for a missing or empty track. */
         void addTrack(std::shared_ptr<const BodyTrack> track);
 
         std::size_t getPathCount() const { return tracks_.size(); }

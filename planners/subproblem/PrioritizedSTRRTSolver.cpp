@@ -102,14 +102,19 @@ bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &
         return false;
     const auto &team = local->getRobots();
 
-    std::vector<TimedPath> paths(team.size());
-    std::vector<std::size_t> planned;
+    if (ptc)
+        return false;
     // Each robot's bodies along its path are computed once and shared by the obstacles of all robots after it.
     std::vector<std::shared_ptr<const BodyTrack>> plannedTracks, otherTracks;
     if (settings_.avoidOthers)
         for (std::size_t o = 0; o < subproblem.others.size(); ++o)
+        {
+            if (!DynamicObstacles::fits(subproblem.otherPaths[o]))
+                return false;  // too many timesteps to plan around (a resolution far above the usual)
             otherTracks.push_back(
                 DynamicObstacles::computeTrack(*si.getRobot(subproblem.others[o]), subproblem.otherPaths[o]));
+        }
+    std::vector<TimedPath> paths(team.size());
     for (std::size_t k : priorityOrder(team.size(), seed))
     {
         if (ptc)
@@ -128,13 +133,12 @@ bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &
                              subproblem.goals[k], *hold, subproblem.cappedTermination(ptc), mixSeed(seed, 0x57aa + k));
         if (paths[k].empty())
             return false;
-        if (planned.size() + 1 < team.size())
+        if (plannedTracks.size() + 1 < team.size())  // a robot is planned after this one
         {
             if (!DynamicObstacles::fits(paths[k]))
                 return false;  // too many timesteps to plan around (a resolution far above the usual)
             plannedTracks.push_back(DynamicObstacles::computeTrack(*team[k], paths[k]));
         }
-        planned.push_back(k);
     }
 
     // Robots that arrive early wait at their goal (held safely from their arrival on).

@@ -22,6 +22,9 @@
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/util/Console.h>
 
+#include <algorithm>
+#include <type_traits>
+
 using namespace ompl_parc;
 namespace ob = ompl::base;
 
