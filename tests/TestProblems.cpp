@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <string>
 
 ompl::base::PlannerStatus ompl_parc::test::solveWith(ompl::base::Planner &planner, const MultiRobotProblem &problem,
                                                      double limit)
@@ -13,6 +15,24 @@ ompl::base::PlannerStatus ompl_parc::test::solveWith(ompl::base::Planner &planne
     return planner.solve(ompl::base::timedPlannerTerminationCondition(limit));
 }
 
+namespace
+{
+    /** Two discs "a" and "b" (radius 0.5) in the 20 x 20 box around the origin among \e env's obstacles. */
+    ompl_parc::MultiRobotProblem discPair(const std::shared_ptr<ompl_parc::Environment> &env,
+                                          std::vector<std::vector<double>> starts,
+                                          std::vector<std::vector<double>> goals, double resolution,
+                                          const std::string &name)
+    {
+        ompl::base::RealVectorBounds bounds(2);
+        bounds.setLow(-10.);
+        bounds.setHigh(10.);
+        std::vector<ompl_parc::RobotPtr> team = {std::make_shared<ompl_parc::DiscRobot>("a", env, 0.5, bounds),
+                                                 std::make_shared<ompl_parc::DiscRobot>("b", env, 0.5, bounds)};
+        return ompl_parc::MultiRobotProblem(std::make_shared<ompl_parc::MultiRobotSpaceInformation>(team, resolution),
+                                            std::move(starts), std::move(goals), name);
+    }
+}  // namespace
+
 ompl_parc::MultiRobotProblem ompl_parc::test::twoDiscs(std::vector<double> startA, std::vector<double> goalA,
                                                        std::vector<double> startB, std::vector<double> goalB, bool wall,
                                                        double resolution)
@@ -20,13 +40,8 @@ ompl_parc::MultiRobotProblem ompl_parc::test::twoDiscs(std::vector<double> start
     auto env = std::make_shared<Environment>();
     if (wall)
         env->addBox2D("wall", 0., 0., 0.2, 4.);
-    ompl::base::RealVectorBounds bounds(2);
-    bounds.setLow(-10.);
-    bounds.setHigh(10.);
-    std::vector<RobotPtr> team = {std::make_shared<DiscRobot>("a", env, 0.5, bounds),
-                                  std::make_shared<DiscRobot>("b", env, 0.5, bounds)};
-    return MultiRobotProblem(std::make_shared<MultiRobotSpaceInformation>(team, resolution),
-                             {std::move(startA), std::move(startB)}, {std::move(goalA), std::move(goalB)}, "two_discs");
+    return discPair(env, {std::move(startA), std::move(startB)}, {std::move(goalA), std::move(goalB)}, resolution,
+                    "two_discs");
 }
 
 ompl_parc::MultiRobotProblem ompl_parc::test::corridorSwap(double resolution)
@@ -34,13 +49,7 @@ ompl_parc::MultiRobotProblem ompl_parc::test::corridorSwap(double resolution)
     auto env = std::make_shared<Environment>();
     env->addBox2D("above", 0., 5.3, 20., 9.4);
     env->addBox2D("below", 0., -5.3, 20., 9.4);
-    ompl::base::RealVectorBounds bounds(2);
-    bounds.setLow(-10.);
-    bounds.setHigh(10.);
-    std::vector<RobotPtr> team = {std::make_shared<DiscRobot>("a", env, 0.5, bounds),
-                                  std::make_shared<DiscRobot>("b", env, 0.5, bounds)};
-    return MultiRobotProblem(std::make_shared<MultiRobotSpaceInformation>(team, resolution), {{-5., 0.}, {5., 0.}},
-                             {{5., 0.}, {-5., 0.}}, "corridor_swap");
+    return discPair(env, {{-5., 0.}, {5., 0.}}, {{5., 0.}, {-5., 0.}}, resolution, "corridor_swap");
 }
 
 std::vector<double> ompl_parc::test::straightLine(const std::vector<double> &a, const std::vector<double> &b,
