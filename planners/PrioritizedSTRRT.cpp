@@ -9,6 +9,10 @@
 #include <ompl/base/goals/GoalState.h>
 #include <ompl/util/Exception.h>
 
+#include <algorithm>
+#include <climits>
+#include <cmath>
+
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
 
@@ -20,6 +24,9 @@ ompl_parc::PrioritizedSTRRT::PrioritizedSTRRT(const ob::SpaceInformationPtr &si)
     declareParam<std::string>("priority_order", this, &PrioritizedSTRRT::setPriorityOrder,
                               &PrioritizedSTRRT::getPriorityOrder);
     declareParam<unsigned int>("seed", this, &PrioritizedSTRRT::setSeed, &PrioritizedSTRRT::getSeed);
+    declareParam<bool>("promote", this, &PrioritizedSTRRT::setPromote, &PrioritizedSTRRT::getPromote, "0,1");
+    declareParam<unsigned int>("sample_cap", this, &PrioritizedSTRRT::setSampleCap, &PrioritizedSTRRT::getSampleCap,
+                               "0:1000:100000000");
     smoothing_.declareParameter(*this);
     smoothing_.setReplanner([] { return std::make_shared<PrioritizedSTRRTSolver>(); });
     declareParam<std::string>("rewiring", this, &PrioritizedSTRRT::setRewiring, &PrioritizedSTRRT::getRewiring);
@@ -119,7 +126,16 @@ ob::PlannerStatus ompl_parc::PrioritizedSTRRT::solve(const ob::PlannerTerminatio
     const InnerPlannerLog::Session session;
     {
         const InnerPlannerLog::Scope inner;
-        solved_ = PrioritizedSTRRTSolver(settings_).solve(*mrsi_, whole, ptc, lastSeed_, patch);
+        const PrioritizedSTRRTSolver solver(settings_);
+        solved_ = false;
+        // Round r: each robot's ST-RRT capped at sample_cap x 2^r iterations (no cap and one round for 0).
+        for (rounds_ = 0; !solved_ && !ptc && (sampleCap_ > 0 || rounds_ == 0);)
+        {
+            const double cap = std::ldexp(static_cast<double>(sampleCap_), static_cast<int>(std::min(rounds_, 64u)));
+            whole.sampleCap = static_cast<unsigned int>(std::min(cap, static_cast<double>(UINT_MAX)));
+            solved_ = solver.solve(*mrsi_, whole, ptc, rounds_ == 0 ? lastSeed_ : mixSeed(lastSeed_, rounds_), patch);
+            ++rounds_;
+        }
     }
     if (!solved_)
         return ob::PlannerStatus::TIMEOUT;
@@ -147,5 +163,6 @@ void ompl_parc::PrioritizedSTRRT::getPlannerData(ob::PlannerData &data) const
     data.properties["seed INTEGER"] = std::to_string(lastSeed_);
     data.properties["priority_order STRING"] = getPriorityOrder();
     data.properties["solved BOOLEAN"] = solved_ ? "1" : "0";
+    data.properties["rounds INTEGER"] = std::to_string(rounds_);
     SmoothingStep::addProperties(*mrsi_, plan_, smoothing_.getReport(), data);
 }

@@ -24,8 +24,10 @@ namespace ompl_parc
       public:
         explicit PrioritizedSTRRT(const ompl::base::SpaceInformationPtr &si);
 
-        /** \brief INVALID_START / INVALID_GOAL (logging which robot is invalid), EXACT_SOLUTION, or TIMEOUT
-            when prioritised planning fails in this order (it may fail before the termination condition). */
+        /** \brief INVALID_START / INVALID_GOAL (logging which robot is invalid), EXACT_SOLUTION, or TIMEOUT.
+            Plans in rounds until the termination condition: round r caps each robot's ST-RRT at sample_cap x 2^r
+            iterations and draws fresh samples, and within a round a robot that fails is promoted to the front
+            (promote). With sample_cap 0 there is one uncapped round, which may fail before the condition. */
         using ompl::base::Planner::solve;  // keep solve(seconds) visible next to the override
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
         void getPlannerData(ompl::base::PlannerData &data) const override;
@@ -42,6 +44,12 @@ namespace ompl_parc
         /** \brief Seed of the priority shuffle and of all sampling; 0: drawn from OMPL's seed sequence. */
         void setSeed(unsigned int seed) { seed_ = seed; }
         unsigned int getSeed() const { return seed_; }
+        /** \brief Promote a robot that cannot be planned to the front of the order and plan again (default on). */
+        void setPromote(bool promote) { settings_.promote = promote; }
+        bool getPromote() const { return settings_.promote; }
+        /** \brief ST-RRT iterations per robot in the first round (doubling each round); 0: no cap, one round. */
+        void setSampleCap(unsigned int cap) { sampleCap_ = cap; }
+        unsigned int getSampleCap() const { return sampleCap_; }
         /** \brief ST-RRT rewiring: "off" (default, as in the paper), "radius" or "knearest". */
         void setRewiring(const std::string &rewiring);
         std::string getRewiring() const { return settings_.rewiring; }
@@ -74,6 +82,11 @@ namespace ompl_parc
         PrioritizedSTRRTSettings settings_;
         unsigned int seed_{0};
         unsigned int lastSeed_{0};
+        unsigned int sampleCap_{DEFAULT_SAMPLE_CAP};
+        /** \brief Rounds the last solve() ran. */
+        unsigned int rounds_{0};
+
+        static constexpr unsigned int DEFAULT_SAMPLE_CAP = 50000;
     };
 }  // namespace ompl_parc
 

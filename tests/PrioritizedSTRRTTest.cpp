@@ -31,10 +31,9 @@ namespace
         return sub;
     }
 
-    /** Disc 'a' (first priority) runs through a corridor from (-8, 0) to (8, 0); disc 'b' enters it from
-        below through a gap and stops at (0, 0), on a's way. b could arrive after 4 s, but a passes there
-        only after 8 s: b's goal counts only once a has gone by. */
-    MultiRobotProblem corridor()
+    /** Discs 'a' and 'b' in a corridor one disc wide along y = 0 (x from -10 to 10), with a gap below it at
+        x = 0 that leads to an open area. */
+    MultiRobotProblem corridor(std::vector<std::vector<double>> starts, std::vector<std::vector<double>> goals)
     {
         auto env = std::make_shared<Environment>();
         env->addBox2D("top", 0., 1., 20., 0.6);
@@ -45,8 +44,23 @@ namespace
         bounds.setHigh(10.);
         std::vector<RobotPtr> team = {std::make_shared<DiscRobot>("a", env, 0.5, bounds),
                                       std::make_shared<DiscRobot>("b", env, 0.5, bounds)};
-        return MultiRobotProblem(std::make_shared<MultiRobotSpaceInformation>(team), {{-8., 0.}, {0., -4.}},
-                                 {{8., 0.}, {0., 0.}}, "corridor");
+        return MultiRobotProblem(std::make_shared<MultiRobotSpaceInformation>(team), std::move(starts),
+                                 std::move(goals), "corridor");
+    }
+
+    /** Disc 'a' (first priority) runs through the corridor from (-8, 0) to (8, 0); disc 'b' enters it from
+        below through the gap and stops at (0, 0), on a's way. b could arrive after 4 s, but a passes there
+        only after 8 s: b's goal counts only once a has gone by. */
+    MultiRobotProblem corridor()
+    {
+        return corridor({{-8., 0.}, {0., -4.}}, {{8., 0.}, {0., 0.}});
+    }
+
+    /** The same with the priorities the wrong way round: 'a' (first) comes up through the gap and parks at (0, 0)
+        for good, walling in 'b', which must pass there from (-8, 0) to (8, 0). Solvable with b first. */
+    MultiRobotProblem walledIn()
+    {
+        return corridor({{0., -4.}, {-8., 0.}}, {{0., 0.}, {8., 0.}});
     }
 
     /** Solve \e problem with the PrioritizedSTRRT planner and validate its plan independently. */
@@ -177,6 +191,55 @@ TEST(PrioritizedSTRRTSolver, APermanentlyBlockedGoalFailsAtOnce)
     PrioritizedSTRRT planner(problem.getSpaceInformation());
     planner.setProblemDefinition(problem.createProblemDefinition());
     EXPECT_EQ(planner.solve(ob::timedPlannerTerminationCondition(30.)), ob::PlannerStatus::INVALID_GOAL);
+}
+
+TEST(PrioritizedSTRRTSolver, PromotesARobotThatTheOrderWallsIn)
+{
+    const auto problem = walledIn();
+    const auto &si = *problem.getSpaceInformation();
+    auto sub = wholeProblem(problem);
+    sub.sampleCap = 20000;  // b's ST-RRT gives up after this many iterations instead of at the limit
+    PrioritizedSTRRTSettings plain;
+    plain.promote = false;
+    Patch patch;
+    EXPECT_FALSE(PrioritizedSTRRTSolver(plain).solve(si, sub, ob::timedPlannerTerminationCondition(60.), 3, patch));
+
+    ASSERT_TRUE(PrioritizedSTRRTSolver().solve(si, sub, ob::timedPlannerTerminationCondition(60.), 3, patch));
+    const auto report = validatePatch(problem, sub, patch);
+    EXPECT_TRUE(report.valid) << report.message;
+    // b went first: it is past the gap before a arrives at (0, 0).
+    EXPECT_LT(patch.paths[1].getArrival(), patch.paths[0].getArrival() + 8 * 128);
+    std::vector<double> b(2);
+    patch.paths[1].getConfig(patch.paths[0].getArrival(), b.data());
+    EXPECT_GT(b[0], 1.);
+}
+
+TEST(PrioritizedSTRRT, PlansInRoundsUntilTheStop)
+{
+    const auto problem = walledIn();
+    const auto solve = [&](const std::string &promote, const std::string &cap, double limit)
+    {
+        PrioritizedSTRRT planner(problem.getSpaceInformation());
+        planner.params().setParam("promote", promote);
+        planner.params().setParam("sample_cap", cap);
+        planner.params().setParam("seed", "5");
+        const auto pdef = problem.createProblemDefinition();
+        planner.setProblemDefinition(pdef);
+        planner.setup();
+        const auto status = planner.solve(ob::timedPlannerTerminationCondition(limit));
+        if (status == ob::PlannerStatus::EXACT_SOLUTION)
+        {
+            const auto report = SolutionValidator(problem).validate(planner.getPlan());
+            EXPECT_TRUE(report.valid) << report.message;
+        }
+        ob::PlannerData data(problem.getSpaceInformation());
+        planner.getPlannerData(data);
+        return std::make_pair(ob::PlannerStatus::StatusType(status), data.properties["rounds INTEGER"]);
+    };
+    // The given order alone: b is walled in and its ST-RRT runs until the stop (one round, no cap).
+    EXPECT_EQ(solve("0", "0", 1.), std::make_pair(ob::PlannerStatus::TIMEOUT, std::string("1")));
+    // Capped rounds with promotion: b is planned first within the first round.
+    EXPECT_EQ(solve("1", "20000", 60.), std::make_pair(ob::PlannerStatus::EXACT_SOLUTION, std::string("1")));
 }
 
 TEST(PrioritizedSTRRT, HonoursA10msTerminationCondition)

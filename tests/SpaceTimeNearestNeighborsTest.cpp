@@ -215,6 +215,60 @@ TEST(SpaceTimeNearestNeighbors, AnswersAsLinearSearchAtTheEdges)
         space->freeState(e->state);
 }
 
+/* The grid's cells and slabs cover the space's bounds and a range of times: points beyond them (outside the bounds,
+   before time 0, after the last slab) must be found all the same, and a large tree is where cells are skipped. */
+TEST(SpaceTimeNearestNeighbors, AnswersAsLinearSearchBeyondTheGrid)
+{
+    std::mt19937 rng(11);
+    for (const auto &[dimension, vMax, timeWeight] : {std::tuple{2u, 1., 0.5}, std::tuple{3u, 2., 0.3}})
+    {
+        SCOPED_TRACE(dimension);
+        const auto space = spaceOf(dimension, vMax, timeWeight);  // bounds [-4, 4], time bounds [0, 10]
+        std::uniform_real_distribution<double> coordinate(-12., 12.), time(-5., 40.), unit(0., 1.);
+        std::vector<ob::State *> states;
+        const auto draw = [&]
+        {
+            auto *state = space->allocState()->as<ob::CompoundState>();
+            for (unsigned int k = 0; k < dimension; ++k)
+                state->as<ob::RealVectorStateSpace::StateType>(0)->values[k] =
+                    unit(rng) < 0.7 ? 0.25 * std::round(coordinate(rng)) : coordinate(rng);
+            const double u = unit(rng);
+            state->as<ob::TimeStateSpace::StateType>(1)->position = u < 0.02  ? 1e7 * (1. + u)
+                                                                    : u < 0.5 ? 0.5 * std::round(time(rng))
+                                                                              : time(rng);
+            states.push_back(state);
+            return std::make_unique<Element>(Element{state});
+        };
+        std::vector<std::unique_ptr<Element>> elements, queries;
+        for (int i = 0; i < 3000; ++i)
+            elements.push_back(draw());
+        for (int i = 0; i < 400; ++i)
+            queries.push_back(draw());
+
+        ompl::NearestNeighborsLinear<const Element *> linear;
+        linear.setDistanceFunction([&](const Element *a, const Element *b)
+                                   { return space->distance(a->state, b->state); });
+        Flat flat(*space, [](const Element *const &e) { return e->state; });
+        for (std::size_t i = 0; i < elements.size(); ++i)
+        {
+            linear.add(elements[i].get());
+            flat.add(elements[i].get());
+            if (i % 97 == 0 || i + 1 == elements.size())
+                for (std::size_t q = 0; q < queries.size(); q += 7)
+                    ASSERT_EQ(linear.nearest(queries[q].get()), flat.nearest(queries[q].get()))
+                        << "query " << q << " among " << i + 1;
+        }
+        for (const auto &q : queries)
+            EXPECT_EQ(linear.nearest(q.get()), flat.nearest(q.get()));
+        for (std::size_t i = 0; i < elements.size(); i += 5)
+            ASSERT_EQ(linear.remove(elements[i].get()), flat.remove(elements[i].get()));
+        for (const auto &q : queries)
+            EXPECT_EQ(linear.nearest(q.get()), flat.nearest(q.get()));
+        for (ob::State *state : states)
+            space->freeState(state);
+    }
+}
+
 TEST(SpaceTimeNearestNeighbors, NeedsAEuclideanSpaceComponent)
 {
     const auto circle = std::make_shared<SpaceTimeStateSpace>(std::make_shared<ob::SO2StateSpace>());

@@ -10,6 +10,7 @@
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/util/RandomNumbers.h>
 
+#include <algorithm>
 #include <numeric>
 
 namespace ob = ompl::base;
@@ -93,6 +94,50 @@ ompl_parc::TimedPath ompl_parc::PrioritizedSTRRTSolver::planRobot(const ob::Stat
         ->layOnGrid(*pdef->getSolutionPath()->as<og::PathGeometric>());
 }
 
+std::optional<std::size_t> ompl_parc::PrioritizedSTRRTSolver::planInOrder(
+    const MultiRobotSpaceInformation &si, const Subproblem &subproblem, const MultiRobotSpaceInformation &local,
+    const std::vector<std::size_t> &order, const Tracks &context, const ob::PlannerTerminationCondition &ptc,
+    std::uint_fast32_t seed, std::vector<TimedPath> &paths, bool &hopeless) const
+{
+    const auto &team = local.getRobots();
+    hopeless = true;
+    // Each robot's bodies along its path are computed once and shared by the obstacles of all robots after it.
+    Tracks planned;
+    for (std::size_t k : order)
+    {
+        if (ptc)
+            return k;
+        auto obstacles = std::make_shared<DynamicObstacles>(team[k], si.getResolution());
+        for (const auto &track : planned)
+            obstacles->addTrack(track);
+        for (const auto &track : context)
+            obstacles->addTrack(track);
+        if (!obstacles->isClear(subproblem.starts[k].data(), 0))
+            return k;
+        const auto hold = obstacles->earliestHold(subproblem.goals[k].data());
+        if (!hold)
+        {
+            hopeless = false;
+            return k;
+        }
+        // The sample cap bounds each robot's ST-RRT iterations.
+        paths[k] = planRobot(local.getCompositeSpace()->getRobotSpace(k), obstacles, subproblem.starts[k],
+                             subproblem.goals[k], *hold, subproblem.cappedTermination(ptc), mixSeed(seed, 0x57aa + k));
+        if (paths[k].empty())
+        {
+            hopeless = static_cast<bool>(ptc);
+            return k;
+        }
+        if (planned.size() + 1 < team.size())  // a robot is planned after this one
+        {
+            if (!DynamicObstacles::fits(paths[k]))
+                return k;  // too many timesteps to plan around (a resolution far above the usual)
+            planned.push_back(DynamicObstacles::computeTrack(*team[k], paths[k]));
+        }
+    }
+    return std::nullopt;
+}
+
 bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
                                               const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed,
                                               Patch &patch) const
@@ -100,52 +145,45 @@ bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &
     const auto local = subproblem.createSpaceInformation(si, seed);
     if (!local)
         return false;
-    const auto &team = local->getRobots();
+    const std::size_t size = local->getRobots().size();
 
     if (ptc)
         return false;
-    // Each robot's bodies along its path are computed once and shared by the obstacles of all robots after it.
-    std::vector<std::shared_ptr<const BodyTrack>> plannedTracks, otherTracks;
+    Tracks context;
     if (settings_.avoidOthers)
         for (std::size_t o = 0; o < subproblem.others.size(); ++o)
         {
             if (!DynamicObstacles::fits(subproblem.otherPaths[o]))
                 return false;  // too many timesteps to plan around (a resolution far above the usual)
-            otherTracks.push_back(
+            context.push_back(
                 DynamicObstacles::computeTrack(*si.getRobot(subproblem.others[o]), subproblem.otherPaths[o]));
         }
-    std::vector<TimedPath> paths(team.size());
-    for (std::size_t k : priorityOrder(team.size(), seed))
+    std::vector<TimedPath> paths(size);
+    std::vector<std::size_t> order = priorityOrder(size, seed);
+    // The first order draws as before promotion existed; each later one with fresh samples.
+    for (std::size_t attempt = 0;; ++attempt)
     {
-        if (ptc)
+        bool hopeless = false;
+        const auto failed = planInOrder(si, subproblem, *local, order, context, ptc,
+                                        attempt == 0 ? seed : mixSeed(seed, 0x9e0 + attempt), paths, hopeless);
+        if (getenv("PPDBG"))
+            fprintf(stderr, "cap %u attempt %zu failed %ld at position %ld hopeless %d\n", subproblem.sampleCap,
+                    attempt, failed ? (long)*failed : -1L,
+                    failed ? (long)(std::find(order.begin(), order.end(), *failed) - order.begin()) : -1L,
+                    (int)hopeless);
+        if (!failed)
+            break;
+        if (hopeless || !settings_.promote || attempt + 1 >= size || order.front() == *failed)
             return false;
-        auto obstacles = std::make_shared<DynamicObstacles>(team[k], si.getResolution());
-        for (const auto &track : plannedTracks)
-            obstacles->addTrack(track);
-        for (const auto &track : otherTracks)
-            obstacles->addTrack(track);
-        const auto hold = obstacles->earliestHold(subproblem.goals[k].data());
-        if (!obstacles->isClear(subproblem.starts[k].data(), 0) || !hold)
-            return false;
-
-        // The sample cap bounds each robot's ST-RRT iterations.
-        paths[k] = planRobot(local->getCompositeSpace()->getRobotSpace(k), obstacles, subproblem.starts[k],
-                             subproblem.goals[k], *hold, subproblem.cappedTermination(ptc), mixSeed(seed, 0x57aa + k));
-        if (paths[k].empty())
-            return false;
-        if (plannedTracks.size() + 1 < team.size())  // a robot is planned after this one
-        {
-            if (!DynamicObstacles::fits(paths[k]))
-                return false;  // too many timesteps to plan around (a resolution far above the usual)
-            plannedTracks.push_back(DynamicObstacles::computeTrack(*team[k], paths[k]));
-        }
+        order.erase(std::find(order.begin(), order.end(), *failed));
+        order.insert(order.begin(), *failed);
     }
 
     // Robots that arrive early wait at their goal (held safely from their arrival on).
     std::size_t arrival = 0;
     for (const auto &path : paths)
         arrival = std::max(arrival, path.getArrival());
-    for (std::size_t k = 0; k < team.size(); ++k)
+    for (std::size_t k = 0; k < size; ++k)
         paths[k].appendHold(subproblem.goals[k].data(), arrival);
     patch.paths = std::move(paths);
     return true;

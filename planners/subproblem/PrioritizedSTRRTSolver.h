@@ -4,6 +4,8 @@
 #include "ompl_parc/arc/SubproblemSolver.h"
 #include "ompl_parc/spacetime/DynamicObstacles.h"
 
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +22,11 @@ namespace ompl_parc
         /** \brief Plan around the subproblem's context too (the other robots near the window, as moving
             obstacles), so that a patch seldom collides with robots outside the team. */
         bool avoidOthers{true};
+        /** \brief When a robot cannot be planned (its ST-RRT runs out of samples, or a robot before it ends on its
+            goal for good), plan the team again with that robot first, at most once per robot of the team: the
+            classic remedy for an order in which a robot is walled in by the paths of those before it (rooms,
+            24 robots: most failures were one robot late in the order, which then held the whole budget). */
+        bool promote{true};
         /** \brief "off", "radius" or "knearest". */
         std::string rewiring{"off"};
         unsigned int batchSize{4096};
@@ -36,7 +43,8 @@ namespace ompl_parc
         being hit by an earlier robot (the goal hold); if an earlier robot ends on the goal for good, the
         solve fails at once. Each space-time path is laid on the timestep grid (the checked interpolations at
         integer timesteps, arrival rounded up) and all paths are padded with their goals to the same length.
-        Cheap when the team's robots can mostly yield to each other; incomplete, as prioritised planning is. */
+        Cheap when the team's robots can mostly yield to each other; incomplete, as prioritised planning is (the
+        promotion of a robot that failed, settings.promote, recovers from many bad orders). */
     class PrioritizedSTRRTSolver : public SubproblemSolver
     {
       public:
@@ -55,6 +63,19 @@ namespace ompl_parc
         std::vector<std::size_t> priorityOrder(std::size_t size, std::uint_fast32_t seed) const;
 
       private:
+        using Tracks = std::vector<std::shared_ptr<const BodyTrack>>;
+
+        /** \brief Plans the robots of \e local's team in \e order into \e paths (robots planned earlier and
+            \e context as moving obstacles): the team position of the robot that could not be planned, or none if all
+            were; \e hopeless is set when planning again in another order cannot help (the stop, a start that is
+            not clear at timestep 0, or a path too long to plan around). */
+        std::optional<std::size_t> planInOrder(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
+                                               const MultiRobotSpaceInformation &local,
+                                               const std::vector<std::size_t> &order, const Tracks &context,
+                                               const ompl::base::PlannerTerminationCondition &ptc,
+                                               std::uint_fast32_t seed, std::vector<TimedPath> &paths,
+                                               bool &hopeless) const;
+
         /** \brief One robot's timestep path from \e start to \e goal among \e obstacles, arriving no earlier
             than timestep \e hold, sampling in \e space; empty on failure. */
         TimedPath planRobot(const ompl::base::StateSpacePtr &space, const DynamicObstaclesPtr &obstacles,
