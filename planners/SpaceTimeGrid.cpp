@@ -96,6 +96,7 @@ void ompl_parc::SpaceTimeGrid::place(std::size_t i)
     }
     slab.earliest = std::min(slab.earliest, values[0]);
     slab.latest = std::max(slab.latest, values[0]);
+
     const std::size_t cell = cellOf(values + 1), at = slab.cellStart[cell + 1];
     slab.ids.insert(slab.ids.begin() + static_cast<std::ptrdiff_t>(at), i);
     slab.values.insert(slab.values.begin() + static_cast<std::ptrdiff_t>(at * stride()), values, values + stride());
@@ -151,6 +152,11 @@ void ompl_parc::SpaceTimeGrid::consider(std::size_t i, const double *values, con
     }
     if (query.spaceWeight * query.spaceWeight * squared > best.distance * best.distance * (1. + RELATIVE_MARGIN))
         return;
+    // Nor can a point beyond the speed limit's reach: its distance is infinite, and an infinite distance never
+    // replaces the first point (the only one that can be best at infinity).
+    const double reach = query.vMax * (deltaTime + query.epsilon);
+    if (squared > reach * reach * (1. + RELATIVE_MARGIN))
+        return;
     const double d = distanceOf(values, query);
     if (d < best.distance || (d == best.distance && i < best.index))
         best = {i, d};
@@ -192,6 +198,13 @@ bool ompl_parc::SpaceTimeGrid::searchSlab(const Slab &slab, const Query &query, 
     {
         from[k] = clampIndex(std::floor((query.q[k] - radius - low_[k]) / width_[k]), cells_[k]);
         to[k] = clampIndex(std::floor((query.q[k] + radius - low_[k]) / width_[k]), cells_[k]);
+    }
+    // A sparse slab is cheaper to scan whole than cell by cell.
+    if (slab.ids.size() <= (to[0] - from[0] + 1) * (to[1] - from[1] + 1))
+    {
+        for (std::size_t e = 0; e < slab.ids.size(); ++e)
+            consider(slab.ids[e], slab.values.data() + e * stride(), query, best);
+        return true;
     }
     for (std::size_t x = from[0]; x <= to[0]; ++x)
         for (std::size_t y = from[1]; y <= to[1]; ++y)
