@@ -128,12 +128,15 @@ ob::PlannerStatus ompl_parc::PrioritizedSTRRT::solve(const ob::PlannerTerminatio
         const InnerPlannerLog::Scope inner;
         const PrioritizedSTRRTSolver solver(settings_);
         solved_ = false;
-        // Round r: each robot's ST-RRT capped at sample_cap x 2^r iterations (no cap and one round for 0).
-        for (rounds_ = 0; !solved_ && !ptc && (sampleCap_ > 0 || rounds_ == 0);)
+        // Round r: each robot's ST-RRT capped at sample_cap x 2^r iterations (no cap and one round for 0); a round
+        // that failed for good (nothing another draw could change) ends them.
+        bool retry = true;
+        for (rounds_ = 0; !solved_ && !ptc && retry && (sampleCap_ > 0 || rounds_ == 0);)
         {
             const double cap = std::ldexp(static_cast<double>(sampleCap_), static_cast<int>(std::min(rounds_, 64u)));
             whole.sampleCap = static_cast<unsigned int>(std::min(cap, static_cast<double>(UINT_MAX)));
-            solved_ = solver.solve(*mrsi_, whole, ptc, rounds_ == 0 ? lastSeed_ : mixSeed(lastSeed_, rounds_), patch);
+            solved_ =
+                solver.solve(*mrsi_, whole, ptc, rounds_ == 0 ? lastSeed_ : mixSeed(lastSeed_, rounds_), patch, retry);
             ++rounds_;
         }
     }

@@ -12,6 +12,8 @@ namespace
     constexpr std::size_t MAX_SLABS = std::size_t{1} << 14;
     /** Relative and absolute margins of the lower bounds that skip cells (far above rounding). */
     constexpr double RELATIVE_MARGIN = 1e-9, ABSOLUTE_MARGIN = 1e-12;
+    /** Below this, squared distances may underflow: no squared shortcuts. */
+    constexpr double TINY = 1e-100;
 
     /** floor(\e f) clamped to [0, n - 1]; 0 for NaN. */
     std::size_t clampIndex(double f, std::size_t n)
@@ -48,8 +50,10 @@ ompl_parc::SpaceTimeGrid::SpaceTimeGrid(std::size_t dimension, const ompl::base:
         cells_[k] = static_cast<std::size_t>(std::min(CELLS_ALONG_LONGEST, std::max(1., std::ceil(extent / side))));
         low_[k] = bounds.low[k];
         width_[k] = extent / static_cast<double>(cells_[k]);
+        edgeSlack_[k] = RELATIVE_MARGIN * (std::fabs(bounds.low[k]) + std::fabs(bounds.high[k]));
     }
-    slabWidth_ = side > 0. && vMax > 0. && std::isfinite(side / vMax) ? side / vMax : 1.;
+    const double slab = side / vMax;
+    slabWidth_ = slab > 0. && std::isfinite(slab) ? slab : 1.;
 }
 
 std::size_t ompl_parc::SpaceTimeGrid::slabOf(double time) const
@@ -106,6 +110,8 @@ void ompl_parc::SpaceTimeGrid::place(std::size_t i)
 
 void ompl_parc::SpaceTimeGrid::remove(std::size_t i)
 {
+    if (i >= size())
+        return;
     const auto at = points_.begin() + static_cast<std::ptrdiff_t>(i * stride());
     points_.erase(at, at + static_cast<std::ptrdiff_t>(stride()));
     slabs_.clear();
@@ -150,12 +156,14 @@ void ompl_parc::SpaceTimeGrid::consider(std::size_t i, const double *values, con
         const double diff = values[k + 1] - query.q[k];
         squared += diff * diff;
     }
-    if (query.spaceWeight * query.spaceWeight * squared > best.distance * best.distance * (1. + RELATIVE_MARGIN))
+    // (Only where the squares cannot underflow.)
+    if (best.distance > TINY &&
+        query.spaceWeight * query.spaceWeight * squared > best.distance * best.distance * (1. + RELATIVE_MARGIN))
         return;
     // Nor can a point beyond the speed limit's reach: its distance is infinite, and an infinite distance never
     // replaces the first point (the only one that can be best at infinity).
     const double reach = query.vMax * (deltaTime + query.epsilon);
-    if (squared > reach * reach * (1. + RELATIVE_MARGIN))
+    if (reach > TINY && squared > reach * reach * (1. + RELATIVE_MARGIN))
         return;
     const double d = distanceOf(values, query);
     if (d < best.distance || (d == best.distance && i < best.index))
@@ -168,10 +176,13 @@ double ompl_parc::SpaceTimeGrid::cellBound(std::size_t x, std::size_t y, double 
     double squared = 0.;
     for (std::size_t k = 0; k < gridded_; ++k)
     {
-        // The outer cells are open-ended: they hold the points beyond the bounds too.
-        const double low = index[k] == 0 ? -HUGE_VAL : low_[k] + width_[k] * static_cast<double>(index[k]);
-        const double high =
-            index[k] + 1 == cells_[k] ? HUGE_VAL : low_[k] + width_[k] * static_cast<double>(index[k] + 1);
+        // The outer cells are open-ended: they hold the points beyond the bounds too. The inner cells' edges are
+        // widened by a slack far above the rounding of a point's cell (floor((x - low) / width)).
+        const double low =
+            index[k] == 0 ? -HUGE_VAL : low_[k] + width_[k] * static_cast<double>(index[k]) - edgeSlack_[k];
+        const double high = index[k] + 1 == cells_[k]
+                                ? HUGE_VAL
+                                : low_[k] + width_[k] * static_cast<double>(index[k] + 1) + edgeSlack_[k];
         const double gap = std::max({0., low - query.q[k], query.q[k] - high});
         squared += gap * gap;
     }
@@ -179,25 +190,35 @@ double ompl_parc::SpaceTimeGrid::cellBound(std::size_t x, std::size_t y, double 
     return query.spaceWeight * space + query.timeWeight * std::max(nearTime, space / query.vMax - query.epsilon);
 }
 
-bool ompl_parc::SpaceTimeGrid::searchSlab(const Slab &slab, const Query &query, Best &best) const
+bool ompl_parc::SpaceTimeGrid::searchSlab(const Slab &slab, bool later, const Query &query, Best &best) const
 {
     const double toEarliest = std::fabs(slab.earliest - query.time), toLatest = std::fabs(slab.latest - query.time);
     const double nearTime = query.time < slab.earliest ? toEarliest : query.time > slab.latest ? toLatest : 0.;
-    // Time differences only grow beyond this slab (slabs are in time order).
-    if (query.timeWeight * nearTime > best.distance)
+    // Beyond this slab in the walk's direction, time differences are at least this slab's on that side (slabs
+    // are in time order; the query's own slab may hold points on both sides of its time).
+    const double onward =
+        later ? (query.time < slab.earliest ? toEarliest : 0.) : (query.time > slab.latest ? toLatest : 0.);
+    if (query.timeWeight * onward > best.distance)
         return false;
-    // A point of the slab is within reach (speed limit) and within the distance left (budget) in space.
-    const double reach = query.vMax * (std::max(toEarliest, toLatest) + query.epsilon);
+    if (query.timeWeight * nearTime > best.distance)
+        return true;
+    // A point of the slab is within reach (speed limit) and within the distance left (budget) in space; the
+    // margins cover the rounding of the distance (relative to it) and of the cells' edges (relative to the grid).
+    const double reach = query.vMax * (std::max(toEarliest, toLatest) + query.epsilon) * (1. + RELATIVE_MARGIN);
     const double budget =
-        query.spaceWeight > 0. ? (best.distance - query.timeWeight * nearTime) / query.spaceWeight : HUGE_VAL;
-    double radius = std::min(reach, budget) * (1. + RELATIVE_MARGIN) + ABSOLUTE_MARGIN;
+        query.spaceWeight > 0.
+            ? (best.distance * (1. + RELATIVE_MARGIN) + ABSOLUTE_MARGIN - query.timeWeight * nearTime) /
+                  query.spaceWeight
+            : HUGE_VAL;
+    double radius = std::min(reach, budget);
     if (!(radius >= 0.))
         radius = HUGE_VAL;
     std::size_t from[2] = {0, 0}, to[2] = {0, 0};
     for (std::size_t k = 0; k < gridded_; ++k)
     {
-        from[k] = clampIndex(std::floor((query.q[k] - radius - low_[k]) / width_[k]), cells_[k]);
-        to[k] = clampIndex(std::floor((query.q[k] + radius - low_[k]) / width_[k]), cells_[k]);
+        const double reachK = radius + edgeSlack_[k] + RELATIVE_MARGIN * std::fabs(query.q[k]);
+        from[k] = clampIndex(std::floor((query.q[k] - reachK - low_[k]) / width_[k]), cells_[k]);
+        to[k] = clampIndex(std::floor((query.q[k] + reachK - low_[k]) / width_[k]), cells_[k]);
     }
     // A sparse slab is cheaper to scan whole than cell by cell.
     if (slab.ids.size() <= (to[0] - from[0] + 1) * (to[1] - from[1] + 1))
@@ -237,9 +258,9 @@ std::size_t ompl_parc::SpaceTimeGrid::nearest(const Query &query) const
         consider(i, points_.data() + i * stride(), query, best);
     const std::size_t slab = query.time < 0. ? 0 : std::min(slabOf(query.time), slabs_.size());
     const auto split = std::lower_bound(occupied_.begin(), occupied_.end(), slab);
-    for (auto s = split; s != occupied_.end() && searchSlab(slabs_[*s], query, best); ++s)
+    for (auto s = split; s != occupied_.end() && searchSlab(slabs_[*s], true, query, best); ++s)
         ;
-    for (auto s = split; s != occupied_.begin() && searchSlab(slabs_[*(s - 1)], query, best); --s)
+    for (auto s = split; s != occupied_.begin() && searchSlab(slabs_[*(s - 1)], false, query, best); --s)
         ;
     return best.index;
 }

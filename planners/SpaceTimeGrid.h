@@ -17,10 +17,10 @@ namespace ompl_parc
         each distance cheap.
         How: the points are kept in time slabs (in time order), each cut into cells over the first two
         coordinates (a fixed grid over the space's bounds, the outer cells open-ended). A query visits the slabs
-        out from its time, ends a direction at the first slab whose nearest time alone is farther than the best
-        distance found, and in a slab scans only the cells that a point could be near enough in: within the
-        remaining distance budget and within the speed limit's reach (a point farther than vMax can travel in the
-        slab's time span is at infinite distance). The answer is exactly a linear search's: the point of least
+        out from its time, ends a direction at the first slab whose time alone, on the far side of the query, is
+        farther than the best distance found, and in a slab scans only the cells that a point could be near enough in:
+       within the remaining distance budget and within the speed limit's reach (a point farther than vMax can travel in
+       the slab's time span is at infinite distance). The answer is exactly a linear search's: the point of least
         distance, the first inserted among equals (the first point when all are infinite or the first one's
         distance is NaN); cells are skipped only on lower bounds with a margin far above rounding. Points with a
         time outside the slabs' range or a non-finite coordinate sit in a list that every query scans. */
@@ -78,9 +78,9 @@ namespace ompl_parc
         /** \brief Makes point \e i (its time and coordinates at \e values) \e best if nearer, or as near and
             inserted earlier. */
         void consider(std::size_t i, const double *values, const Query &query, Best &best) const;
-        /** \brief Scans the cells of \e slab a point nearer than \e best could be in; false if the slab and every
-            slab beyond it in time are farther in time alone. */
-        bool searchSlab(const Slab &slab, const Query &query, Best &best) const;
+        /** \brief Scans the cells of \e slab a point nearer than \e best could be in; false if every slab beyond it
+            in the walk's direction (\e later: to later times) is farther in time alone. */
+        bool searchSlab(const Slab &slab, bool later, const Query &query, Best &best) const;
         /** \brief The distance's lower bound over cell (\e x, \e y) of a slab whose nearest time is \e nearTime. */
         double cellBound(std::size_t x, std::size_t y, double nearTime, const Query &query) const;
         double distanceOf(const double *values, const Query &query) const;
@@ -90,6 +90,8 @@ namespace ompl_parc
         std::size_t gridded_;
         std::size_t cells_[2]{1, 1};
         double low_[2]{0., 0.}, width_[2]{1., 1.};
+        /** \brief How far cell edges are widened for the lower bounds (far above the rounding of a point's cell). */
+        double edgeSlack_[2]{0., 0.};
         double slabWidth_;
         /** \brief Every point's time and coordinates by insertion index (stride() doubles each). */
         std::vector<double> points_;

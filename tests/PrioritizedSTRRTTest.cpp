@@ -207,11 +207,17 @@ TEST(PrioritizedSTRRTSolver, PromotesARobotThatTheOrderWallsIn)
     ASSERT_TRUE(PrioritizedSTRRTSolver().solve(si, sub, ob::timedPlannerTerminationCondition(60.), 3, patch));
     const auto report = validatePatch(problem, sub, patch);
     EXPECT_TRUE(report.valid) << report.message;
-    // b went first: it is past the gap before a arrives at (0, 0).
-    EXPECT_LT(patch.paths[1].getArrival(), patch.paths[0].getArrival() + 8 * 128);
-    std::vector<double> b(2);
-    patch.paths[1].getConfig(patch.paths[0].getArrival(), b.data());
-    EXPECT_GT(b[0], 1.);
+    // b went first: it is past the gap when a first reaches (0, 0).
+    std::vector<double> a(2), b(2);
+    std::size_t t = 0;
+    for (;; ++t)
+    {
+        patch.paths[0].getConfig(t, a.data());
+        if (a[0] == 0. && a[1] == 0.)
+            break;
+    }
+    patch.paths[1].getConfig(t, b.data());
+    EXPECT_GT(b[0], 1.) << "a reached (0, 0) at timestep " << t;
 }
 
 TEST(PrioritizedSTRRT, PlansInRoundsUntilTheStop)
@@ -240,6 +246,10 @@ TEST(PrioritizedSTRRT, PlansInRoundsUntilTheStop)
     EXPECT_EQ(solve("0", "0", 1.), std::make_pair(ob::PlannerStatus::TIMEOUT, std::string("1")));
     // Capped rounds with promotion: b is planned first within the first round.
     EXPECT_EQ(solve("1", "20000", 60.), std::make_pair(ob::PlannerStatus::EXACT_SOLUTION, std::string("1")));
+    // A cap too small for b's way along the corridor: later rounds, with twice the cap each, get there.
+    const auto [status, rounds] = solve("1", "50", 60.);
+    EXPECT_EQ(status, ob::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_GT(std::stoi(rounds), 1) << "rounds " << rounds;
 }
 
 TEST(PrioritizedSTRRT, HonoursA10msTerminationCondition)

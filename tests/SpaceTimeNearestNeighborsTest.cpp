@@ -199,6 +199,27 @@ TEST(SpaceTimeNearestNeighbors, AnswersAsLinearSearchAtTheEdges)
     EXPECT_EQ(linear.nearest(query.get()), shifted);  // within epsilon now: the only finite distance
     EXPECT_EQ(flat.nearest(query.get()), shifted);
 
+    // The query's own slab may end before the query's time while later slabs hold nearer points: the walk to later
+    // times must not stop there (slabs 0.5 wide here; elements at times 1.0, 0.5, 1.0, the query at 0.95).
+    flat.clear();
+    linear.clear();
+    const auto at = [&](double x, double y, double t)
+    {
+        auto held = state(x, t);
+        held->state->as<ob::CompoundState>()->as<ob::RealVectorStateSpace::StateType>(0)->values[1] = y;
+        return held;
+    };
+    const auto p0 = at(0., 0., 1.), p1 = at(3., 3., 0.5), p2 = at(0., 0.01, 1.), late = at(0., 0.01, 0.95);
+    for (const Element *e : {p0.get(), p1.get(), p2.get()})
+    {
+        linear.add(e);
+        flat.add(e);
+    }
+    EXPECT_EQ(linear.nearest(late.get()), p2.get());
+    EXPECT_EQ(flat.nearest(late.get()), p2.get());
+    for (const Element *e : {p0.get(), p1.get(), p2.get(), late.get()})
+        space->freeState(e->state);
+
     // A NaN coordinate makes element 0's distance NaN when it is the query: Linear keeps element 0.
     flat.clear();
     linear.clear();
@@ -264,6 +285,34 @@ TEST(SpaceTimeNearestNeighbors, AnswersAsLinearSearchBeyondTheGrid)
             ASSERT_EQ(linear.remove(elements[i].get()), flat.remove(elements[i].get()));
         for (const auto &q : queries)
             EXPECT_EQ(linear.nearest(q.get()), flat.nearest(q.get()));
+        // Small sparse trees, continuous times: few points per slab, so slabs end on either side of a query's time.
+        std::uniform_real_distribution<double> near(-3., 3.), soon(0., 4.);
+        for (int trial = 0; trial < 300; ++trial)
+        {
+            linear.clear();
+            flat.clear();
+            std::vector<std::unique_ptr<Element>> few;
+            const auto place = [&]
+            {
+                auto *state = space->allocState()->as<ob::CompoundState>();
+                for (unsigned int k = 0; k < dimension; ++k)
+                    state->as<ob::RealVectorStateSpace::StateType>(0)->values[k] = near(rng);
+                state->as<ob::TimeStateSpace::StateType>(1)->position = soon(rng);
+                states.push_back(state);
+                return std::make_unique<Element>(Element{state});
+            };
+            for (int i = 0; i < 3 + trial % 15; ++i)
+            {
+                few.push_back(place());
+                linear.add(few.back().get());
+                flat.add(few.back().get());
+            }
+            for (int q = 0; q < 20; ++q)
+            {
+                const auto query = place();
+                ASSERT_EQ(linear.nearest(query.get()), flat.nearest(query.get())) << "trial " << trial;
+            }
+        }
         for (ob::State *state : states)
             space->freeState(state);
     }

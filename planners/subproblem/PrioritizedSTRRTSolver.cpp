@@ -142,6 +142,15 @@ bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &
                                               const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed,
                                               Patch &patch) const
 {
+    bool retry = false;
+    return solve(si, subproblem, ptc, seed, patch, retry);
+}
+
+bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
+                                              const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed,
+                                              Patch &patch, bool &retry) const
+{
+    retry = false;
     const auto local = subproblem.createSpaceInformation(si, seed);
     if (!local)
         return false;
@@ -166,13 +175,9 @@ bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &
         bool hopeless = false;
         const auto failed = planInOrder(si, subproblem, *local, order, context, ptc,
                                         attempt == 0 ? seed : mixSeed(seed, 0x9e0 + attempt), paths, hopeless);
-        if (getenv("PPDBG"))
-            fprintf(stderr, "cap %u attempt %zu failed %ld at position %ld hopeless %d\n", subproblem.sampleCap,
-                    attempt, failed ? (long)*failed : -1L,
-                    failed ? (long)(std::find(order.begin(), order.end(), *failed) - order.begin()) : -1L,
-                    (int)hopeless);
         if (!failed)
             break;
+        retry = !hopeless;
         if (hopeless || !settings_.promote || attempt + 1 >= size || order.front() == *failed)
             return false;
         order.erase(std::find(order.begin(), order.end(), *failed));

@@ -25,7 +25,8 @@ namespace ompl_parc
         /** \brief When a robot cannot be planned (its ST-RRT runs out of samples, or a robot before it ends on its
             goal for good), plan the team again with that robot first, at most once per robot of the team: the
             classic remedy for an order in which a robot is walled in by the paths of those before it (rooms,
-            24 robots: most failures were one robot late in the order, which then held the whole budget). */
+            24 robots: most failures were one robot late in the order, which then held the whole budget). At most
+            as many orders as the team has robots are tried per call. */
         bool promote{true};
         /** \brief "off", "radius" or "knearest". */
         std::string rewiring{"off"};
@@ -58,6 +59,13 @@ namespace ompl_parc
         bool solve(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
                    const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed,
                    Patch &patch) const override;
+
+        /** \brief solve(), saying on failure in \e retry whether another call (more samples, other draws) could
+            succeed: not after the stop, nor when nothing would change (a start not clear at timestep 0, a path too
+            long to plan around). */
+        bool solve(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
+                   const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed, Patch &patch,
+                   bool &retry) const;
 
         /** \brief The order (positions in the team) in which a solve with \e seed plans a team of \e size. */
         std::vector<std::size_t> priorityOrder(std::size_t size, std::uint_fast32_t seed) const;
