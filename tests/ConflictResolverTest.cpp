@@ -74,7 +74,7 @@ TEST_F(HeadOn, InvalidEndpointsWidenOnlyTheirSide)
         EXPECT_FALSE(problem.getSpaceInformation()->robotsCollide(0, (*side)[0].data(), 1, (*side)[1].data()));
 }
 
-TEST_F(HeadOn, FailedWindowsGrowUntilTheGlobalProblem)
+TEST_F(HeadOn, FailedWindowsGrowUntilTheGlobalProblemOfTheTeamThenOfAllRobots)
 {
     ArcSettings settings;
     settings.window = 100;
@@ -111,6 +111,14 @@ TEST_F(HeadOn, FailedWindowsGrowUntilTheGlobalProblem)
             globalCaps.push_back(s.sampleCap);
     EXPECT_EQ(globalCaps,
               (std::vector<unsigned int>{settings.sampleCap, 2 * settings.sampleCap, 4 * settings.sampleCap}));
+    // The team's global problem came first; after it failed around the other robots' fixed paths, the whole team's.
+    std::vector<std::vector<std::size_t>> globalTeams;
+    for (const auto &s : asked)
+        if (s.bounds.empty())
+            globalTeams.push_back(s.robots);
+    const std::vector<std::size_t> pair = {0, 1}, all = {0, 1, 2, 3};
+    EXPECT_EQ(globalTeams, (std::vector<std::vector<std::size_t>>{pair, all, all}));
+    EXPECT_TRUE(asked[0].robots == pair && asked[1].robots == pair) << "windows keep the team";
 }
 
 namespace

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <numeric>
 
 namespace ob = ompl::base;
 
@@ -145,11 +146,12 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
     ResolveTrace &t = trace != nullptr ? *trace : local;
     t = ResolveTrace();
     Repair repair;
+    std::vector<std::size_t> members = team;
     std::size_t lastStart = 0, lastEnd = 0;
     for (unsigned int k = 0; !ptc; ++k)
     {
         Subproblem sub =
-            repair.global ? makeGlobal(plan, team, t.globalRounds) : makeSubproblem(plan, team, timestep, k);
+            repair.global ? makeGlobal(plan, members, t.globalRounds) : makeSubproblem(plan, members, timestep, k);
         const bool unchanged = k > 0 && sub.windowStart == lastStart && sub.windowEnd == lastEnd;
         if (!repair.global && (unchanged || (sub.windowStart == 0 && sub.windowEnd == latestArrival(plan, team))))
         {
@@ -179,6 +181,12 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
                 repair.solver = solver->getName();
                 return repair;
             }
+        }
+        // The team's global problem failed around the others' fixed paths: the next round is the whole team's.
+        if (repair.global && members.size() < si_.getRobotCount())
+        {
+            members.resize(si_.getRobotCount());
+            std::iota(members.begin(), members.end(), 0);
         }
     }
     return std::nullopt;
