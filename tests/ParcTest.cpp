@@ -308,6 +308,24 @@ TEST(Parc, BatchesHoldUpToBatchPerWorkerTimesWConflicts)
     }
 }
 
+/* A repair that grew to every robot (the team's global problem failed around the others' paths) shares robots with
+   the batch's other repairs; a patch continues the plan it was made from, so only one of them may be spliced (the
+   other would jump: before, this returned a plan in which a robot moved 0.11 in one timestep, in 1 of 3 runs). On
+   crossing 24 instance 2 most P-ARC-2 runs meet such a batch. */
+TEST(Parc, ARepairOfEveryRobotIsNotSplicedOverByItsBatch)
+{
+    const auto problem = scenarios::createScenario("crossing", 24, 128., 2);
+    for (unsigned int seed : {1u, 2u})
+    {
+        PARC parc(problem.getSpaceInformation());
+        parc.setWorkers(2);
+        parc.setSeed(seed);
+        ASSERT_EQ(test::solveWith(parc, problem, 120.), ob::PlannerStatus::EXACT_SOLUTION) << parc.getStatusMessage();
+        const auto report = SolutionValidator(problem).validate(parc.getPlan());
+        EXPECT_TRUE(report.valid) << "seed " << seed << ": " << report.message;
+    }
+}
+
 class OrParcSolves : public testing::TestWithParam<std::tuple<std::string, std::size_t, unsigned int, unsigned int>>
 {
 };

@@ -37,8 +37,8 @@ namespace ompl_parc
         covers the team's whole plan, the attempt becomes the global problem (global starts and goals, whole
         spaces), retried with fresh seeds until success or termination; after the team's global problem has failed
         once (around the other robots' fixed paths, which may wall it in), the rounds are the whole team's: every
-        robot of the problem (the paper's global problem). Its repair then covers them all (P-ARC: a batch's repairs
-        may then share robots; the detection after the batch checks what their splices left). Every call is bounded: a
+        robot of the problem (the paper's global problem). Its repair then covers them all (P-ARC splices it first and
+        drops the batch's other repairs, RepairLoop). Every call is bounded: a
        local window by ArcSettings::sampleCap iterations, global round g by sampleCap x 2^g (a sample cap of 0 lifts
        these caps); and every call, whatever the iterations cost, by time: it may run as long as the solve had run
         before it started (at least MIN_CALL_SECONDS), since the resolver was made (RepairLoop::configure, at

@@ -10,6 +10,7 @@
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
+#include <numeric>
 #include <atomic>
 #include <memory>
 #include <mutex>
@@ -186,18 +187,37 @@ bool ompl_parc::RepairLoop::repairBatch(const std::vector<BatchEntry> &batch,
     parallel_.repairAttempts += stats.attempts;
     parallel_.cancelledAttempts += stats.cancelled;
     parallel_.projectedResolution += largest(stats.workerCpu);
+    // A patch continues the plan it was made from, so two patches of one robot cannot both be spliced. The batch's
+    // teams are robot-disjoint, but a repair that grew to every robot (ConflictResolver) is not: it goes first and
+    // the batch's other repairs of its robots are dropped (detection finds their conflicts again).
+    std::vector<std::size_t> order(repairs.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_partition(order.begin(), order.end(),
+                          [&](std::size_t k)
+                          { return repairs[k] && repairs[k]->subproblem.robots.size() > batch[k].team.size(); });
+    std::vector<char> patched(problem_.getRobotCount(), 0);
     bool all = true;
-    for (std::size_t k = 0; k < repairs.size(); ++k)  // batch order: deterministic
+    for (std::size_t k : order)  // batch order (grown repairs first): deterministic
     {
         ++statistics_.conflicts;
         const Conflict &conflict = batch[k].conflict;
-        if (const auto &repair = repairs[k])
+        const auto &repair = repairs[k];
+        if (repair && std::any_of(repair->subproblem.robots.begin(), repair->subproblem.robots.end(),
+                                  [&](std::size_t r) { return patched[r] != 0; }))
+            OMPL_DEBUG(
+                "conflict %u: robots %zu and %zu at t=%zu, team {%s}: repair dropped (a repair of every robot "
+                "came before it in the batch)",
+                statistics_.conflicts, conflict.first, conflict.second, conflict.timestep,
+                listed(batch[k].team).c_str());
+        else if (repair)
         {
             OMPL_DEBUG("conflict %u: robots %zu and %zu at t=%zu, team {%s}: repaired by %s over [%zu, %zu]%s",
                        statistics_.conflicts, conflict.first, conflict.second, conflict.timestep,
                        listed(batch[k].team).c_str(), repair->solver.c_str(), repair->subproblem.windowStart,
                        repair->subproblem.windowEnd, repair->global ? " (global)" : "");
             applyRepair(*repair);
+            for (std::size_t r : repair->subproblem.robots)
+                patched[r] = 1;
         }
         else
         {
