@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <mutex>
 #include <thread>
@@ -19,6 +20,7 @@ namespace
     {
       public:
         std::string getName() const override { return "recording"; }
+        bool usesContext() const override { return context_; }
         bool solve(const MultiRobotSpaceInformation &, const Subproblem &sub, const ob::PlannerTerminationCondition &,
                    std::uint_fast32_t, Patch &) const override
         {
@@ -28,6 +30,8 @@ namespace
         }
         mutable std::mutex mutex_;
         mutable std::vector<Subproblem> asked_;
+        /** \brief Whether it claims to plan around the other robots (as PP-ST-RRT does). */
+        bool context_{false};
     };
 
     /** Mobile Cross 4 with straight-line plans: robots 0 and 1 collide head-on in the middle. */
@@ -80,6 +84,7 @@ TEST_F(HeadOn, FailedWindowsGrowUntilTheGlobalProblemOfTheTeamThenOfAllRobots)
     settings.window = 100;
     settings.growthStep = 300;
     auto solver = std::make_shared<RecordingSolver>();
+    solver->context_ = true;
     ConflictResolver resolver(*problem.getSpaceInformation(), settings, {solver});
     // Give up once the global problem has been tried three times.
     const auto ptc = ob::PlannerTerminationCondition(
@@ -119,6 +124,20 @@ TEST_F(HeadOn, FailedWindowsGrowUntilTheGlobalProblemOfTheTeamThenOfAllRobots)
     const std::vector<std::size_t> pair = {0, 1}, all = {0, 1, 2, 3};
     EXPECT_EQ(globalTeams, (std::vector<std::vector<std::size_t>>{pair, all, all}));
     EXPECT_TRUE(asked[0].robots == pair && asked[1].robots == pair) << "windows keep the team";
+
+    // Without a solver that plans around the others, their paths cannot be what failed it: the team keeps trying.
+    auto blind = std::make_shared<RecordingSolver>();
+    ConflictResolver blindResolver(*problem.getSpaceInformation(), settings, {blind});
+    const auto blindStop = ob::PlannerTerminationCondition(
+        [&]
+        {
+            std::lock_guard<std::mutex> lock(blind->mutex_);
+            return std::count_if(blind->asked_.begin(), blind->asked_.end(),
+                                 [](const Subproblem &s) { return s.bounds.empty(); }) >= 3;
+        });
+    EXPECT_FALSE(blindResolver.resolve(plan, {0, 1}, 1280, blindStop, 1).has_value());
+    for (const auto &s : blind->asked_)
+        EXPECT_EQ(s.robots, pair);
 }
 
 namespace

@@ -310,12 +310,18 @@ TEST(Parc, BatchesHoldUpToBatchPerWorkerTimesWConflicts)
 
 /* A repair that grew to every robot (the team's global problem failed around the others' paths) shares robots with
    the batch's other repairs; a patch continues the plan it was made from, so only one of them may be spliced (the
-   other would jump: before, this returned a plan in which a robot moved 0.11 in one timestep, in 1 of 3 runs). On
-   crossing 24 instance 2 most P-ARC-2 runs meet such a batch. */
+   other would jump: before the fix, a robot moved 0.11 in one timestep, and this test failed 5 runs of 5). On
+   crossing 24 instance 2 most P-ARC-2 runs meet such a batch (18 of 20 demo runs; which batches do depends on the
+   repairs' time caps, so on the machine's speed). One seed under the sanitizers, which run several times slower. */
 TEST(Parc, ARepairOfEveryRobotIsNotSplicedOverByItsBatch)
 {
     const auto problem = scenarios::createScenario("crossing", 24, 128., 2);
-    for (unsigned int seed : {1u, 2u})
+#ifdef OMPL_PARC_SANITIZED
+    const std::vector<unsigned int> seeds = {1};
+#else
+    const std::vector<unsigned int> seeds = {1, 2};
+#endif
+    for (unsigned int seed : seeds)
     {
         PARC parc(problem.getSpaceInformation());
         parc.setWorkers(2);

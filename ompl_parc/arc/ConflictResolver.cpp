@@ -182,8 +182,9 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
                 return repair;
             }
         }
-        // The team's global problem failed around the others' fixed paths: the next round is the whole team's.
-        if (repair.global && members.size() < si_.getRobotCount())
+        // The team's global problem failed around the other robots' fixed paths (a solver planned around them):
+        // the next rounds plan every robot.
+        if (repair.global && usesContext_ && members.size() < si_.getRobotCount())
         {
             members.resize(si_.getRobotCount());
             std::iota(members.begin(), members.end(), 0);

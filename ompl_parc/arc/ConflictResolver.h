@@ -35,12 +35,13 @@ namespace ompl_parc
         (goal) side is first widened by ArcSettings::endpointStep until the team's states there are
         collision-free; local bounds follow ArcSettings. When a grown window equals the previous one, or
         covers the team's whole plan, the attempt becomes the global problem (global starts and goals, whole
-        spaces), retried with fresh seeds until success or termination; after the team's global problem has failed
-        once (around the other robots' fixed paths, which may wall it in), the rounds are the whole team's: every
-        robot of the problem (the paper's global problem). Its repair then covers them all (P-ARC splices it first and
-        drops the batch's other repairs, RepairLoop). Every call is bounded: a
-       local window by ArcSettings::sampleCap iterations, global round g by sampleCap x 2^g (a sample cap of 0 lifts
-       these caps); and every call, whatever the iterations cost, by time: it may run as long as the solve had run
+        spaces), retried with fresh seeds until success or termination. When a solver of the hierarchy plans around
+        the other robots (PP-ST-RRT) and the team's global problem has failed once, the next rounds plan every robot
+        of the problem (the paper's global problem): the others' fixed paths may wall the team in for good. Such a
+        repair covers every robot (P-ARC splices it first and drops the batch's other repairs, RepairLoop). Every
+        call is bounded: a local window by ArcSettings::sampleCap iterations, global round g by sampleCap x 2^g (a
+        sample cap of 0 lifts these caps); and every call, whatever the iterations cost, by time: it may run as long
+        as the solve had run
         before it started (at least MIN_CALL_SECONDS), since the resolver was made (RepairLoop::configure, at
         each solve). So no call ever holds more than half of the time spent when the solve stops, while the
         effort per call still grows geometrically. Only calls that reach the time cap make a seeded solve's

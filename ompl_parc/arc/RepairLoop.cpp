@@ -199,17 +199,20 @@ bool ompl_parc::RepairLoop::repairBatch(const std::vector<BatchEntry> &batch,
     bool all = true;
     for (std::size_t k : order)  // batch order (grown repairs first): deterministic
     {
-        ++statistics_.conflicts;
         const Conflict &conflict = batch[k].conflict;
         const auto &repair = repairs[k];
         if (repair && std::any_of(repair->subproblem.robots.begin(), repair->subproblem.robots.end(),
                                   [&](std::size_t r) { return patched[r] != 0; }))
+        {
+            // Not counted: the repair of every robot replaced its robots' paths; a conflict left is found again.
             OMPL_DEBUG(
-                "conflict %u: robots %zu and %zu at t=%zu, team {%s}: repair dropped (a repair of every robot "
-                "came before it in the batch)",
-                statistics_.conflicts, conflict.first, conflict.second, conflict.timestep,
-                listed(batch[k].team).c_str());
-        else if (repair)
+                "robots %zu and %zu at t=%zu, team {%s}: repair dropped (a repair of every robot came before it "
+                "in the batch)",
+                conflict.first, conflict.second, conflict.timestep, listed(batch[k].team).c_str());
+            continue;
+        }
+        ++statistics_.conflicts;
+        if (repair)
         {
             OMPL_DEBUG("conflict %u: robots %zu and %zu at t=%zu, team {%s}: repaired by %s over [%zu, %zu]%s",
                        statistics_.conflicts, conflict.first, conflict.second, conflict.timestep,
@@ -237,7 +240,10 @@ void ompl_parc::RepairLoop::applyRepair(const Repair &repair)
     for (std::size_t robot : sub.robots)
         batchDetector_->invalidate(robot, sub.windowStart);
     const std::size_t duration = repair.patch.getDuration();
-    cache_.add(sub.robots, sub.windowStart, sub.windowStart + duration);
+    // A repair of every robot is not cached: every later conflict would grow to every robot (and P-ARC's batches to
+    // one conflict each).
+    if (sub.robots.size() < problem_.getRobotCount())
+        cache_.add(sub.robots, sub.windowStart, sub.windowStart + duration);
     ++statistics_.repairs;
     statistics_.globalRepairs += repair.global ? 1 : 0;
     ++statistics_.solverWins[repair.solver];

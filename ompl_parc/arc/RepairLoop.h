@@ -48,8 +48,9 @@ namespace ompl_parc
         idle workers running extra attempts with local OR). resolve() then loops: detect the next batch of
         robot-disjoint conflicts (BatchDetector: W = 1 gives the earliest conflict, ARC's), each with its
         robot set grown through the repair cache; repair the batch concurrently (ConflictResolver: windows
-        that grow up to the global problem); apply each repair in batch order with applyRepair(), the one
-        place that splices a patch, pulls back the detector's frontiers and records the repair in the cache.
+        that grow up to the global problem); apply each repair in batch order (one of every robot first)
+        with applyRepair(), the one place that splices a patch, pulls back the detector's frontiers and records
+        the repair in the cache.
         Seeds are derived from one seed per stage and task, so the same seed gives the same plan, and W = 1 is
         exactly ARC. Both stages resume where they stopped when the termination condition fired. */
     class RepairLoop
@@ -85,7 +86,8 @@ namespace ompl_parc
       private:
         /** \brief Splice \e repair into the plan, pull back the frontiers of its robots, cache its interval. */
         void applyRepair(const Repair &repair);
-        /** \brief Repair \e batch concurrently and apply the repairs in batch order; false if \e ptc fired. */
+        /** \brief Repair \e batch concurrently and apply the repairs in batch order (a repair that grew to every
+            robot first, the batch's other repairs of its robots dropped); false if \e ptc fired. */
         bool repairBatch(const std::vector<BatchEntry> &batch, const ompl::base::PlannerTerminationCondition &ptc);
 
         const MultiRobotProblem &problem_;
