@@ -41,12 +41,10 @@ namespace ompl_parc
         repair covers every robot (P-ARC splices it first and drops the batch's other repairs, RepairLoop). Every
         call is bounded: a local window by ArcSettings::sampleCap iterations, global round g by sampleCap x 2^g (a
         sample cap of 0 lifts these caps); and every call, whatever the iterations cost, by time: it may run as long
-        as the solve had run
-        before it started (at least MIN_CALL_SECONDS), since the resolver was made (RepairLoop::configure, at
-        each solve). So no call ever holds more than half of the time spent when the solve stops, while the
-        effort per call still grows geometrically. Only calls that reach the time cap make a seeded solve's
-        result depend on the machine's speed.
-        resolve() only reads the plan, so P-ARC runs several at once. */
+        as the solve had run before it started (at least MIN_CALL_SECONDS), since the resolver was made
+        (RepairLoop::configure, at each solve). So no call ever holds more than half of the time spent when the solve
+       stops, while the effort per call still grows geometrically. Only calls that reach the time cap make a seeded
+       solve's result depend on the machine's speed. resolve() only reads the plan, so P-ARC runs several at once. */
     class ConflictResolver
     {
       public:

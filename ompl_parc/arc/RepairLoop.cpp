@@ -10,10 +10,10 @@
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
-#include <numeric>
 #include <atomic>
 #include <memory>
 #include <mutex>
+#include <numeric>
 #include <sstream>
 
 namespace ob = ompl::base;
@@ -189,7 +189,7 @@ bool ompl_parc::RepairLoop::repairBatch(const std::vector<BatchEntry> &batch,
     parallel_.projectedResolution += largest(stats.workerCpu);
     // A patch continues the plan it was made from, so two patches of one robot cannot both be spliced. The batch's
     // teams are robot-disjoint, but a repair that grew to every robot (ConflictResolver) is not: it goes first and
-    // the batch's other repairs of its robots are dropped (detection finds their conflicts again).
+    // the batch's other repairs of its robots are dropped (a conflict its patch left is found again by detection).
     std::vector<std::size_t> order(repairs.size());
     std::iota(order.begin(), order.end(), 0);
     std::stable_partition(order.begin(), order.end(),

@@ -23,10 +23,10 @@ namespace ompl_parc
             obstacles), so that a patch seldom collides with robots outside the team. */
         bool avoidOthers{true};
         /** \brief When a robot cannot be planned (its ST-RRT runs out of samples, or a robot before it ends on its
-            goal for good), plan the team again with that robot first, at most once per robot of the team: the
-            classic remedy for an order in which a robot is walled in by the paths of those before it (rooms,
-            24 robots: most failures were one robot late in the order, which then held the whole budget). At most
-            as many orders as the team has robots are tried per call. */
+            goal for good), plan the team again with that robot first: the classic remedy for an order in which a robot
+           is walled in by the paths of those before it (rooms, 24 robots: most failures were one robot late in the
+           order, which then held the whole budget). At most as many orders as the team has robots are tried per call.
+         */
         bool promote{true};
         /** \brief "off", "radius" or "knearest". */
         std::string rewiring{"off"};
@@ -42,10 +42,11 @@ namespace ompl_parc
 
         A robot's goal counts only from the earliest timestep from which it can stay there forever without
         being hit by an earlier robot (the goal hold); if an earlier robot ends on the goal for good, the
-        solve fails at once. Each space-time path is laid on the timestep grid (the checked interpolations at
-        integer timesteps, arrival rounded up) and all paths are padded with their goals to the same length.
-        Cheap when the team's robots can mostly yield to each other; incomplete, as prioritised planning is (the
-        promotion of a robot that failed, settings.promote, recovers from many bad orders). */
+        robot is promoted at once (settings.promote; without it the solve fails). Each space-time path is laid on the
+       timestep grid (the checked interpolations at integer timesteps, arrival rounded up) and all paths are padded with
+       their goals to the same length. Cheap when the team's robots can mostly yield to each other; incomplete, as
+       prioritised planning is (the promotion of a robot that failed, settings.promote, recovers from many bad orders).
+     */
     class PrioritizedSTRRTSolver : public SubproblemSolver
     {
       public:
