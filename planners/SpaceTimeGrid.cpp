@@ -25,6 +25,35 @@ namespace
         return static_cast<std::size_t>(f);
     }
 
+    /** The squared Euclidean distance of a point's coordinates \e c and \e q, summed in coordinate order as
+        RealVectorStateSpace::distance does. */
+    double squaredSpace(const double *c, const double *q, std::size_t dimension)
+    {
+        double squared = 0.;
+        for (std::size_t k = 0; k < dimension; ++k)
+        {
+            const double diff = c[k] - q[k];
+            squared += diff * diff;
+        }
+        return squared;
+    }
+
+    /** SpaceTimeStateSpace::distance from the squared space distance and the time difference (its arithmetic). */
+    double combine(double squared, double deltaTime, const ompl_parc::SpaceTimeGrid::Query &query)
+    {
+        const double deltaSpace = std::sqrt(squared);
+        if (deltaSpace / query.vMax > deltaTime + query.epsilon)
+            return std::numeric_limits<double>::infinity();
+        return query.spaceWeight * deltaSpace + query.timeWeight * deltaTime;
+    }
+
+    /** Whether axis \e k of \e bounds has a finite, positive extent (it is gridded then). */
+    bool griddable(const ompl::base::RealVectorBounds &bounds, std::size_t k)
+    {
+        const double extent = bounds.high[k] - bounds.low[k];
+        return std::isfinite(extent) && extent > 0. && std::isfinite(bounds.low[k]);
+    }
+
     /** Whether a cell whose distance is at least \e bound can hold a point nearer than (or as near as) \e best. */
     bool mayHold(double bound, double best)
     {
@@ -37,16 +66,13 @@ ompl_parc::SpaceTimeGrid::SpaceTimeGrid(std::size_t dimension, const ompl::base:
 {
     double side = 0.;
     for (std::size_t k = 0; k < gridded_ && k < bounds.low.size(); ++k)
-    {
-        const double extent = bounds.high[k] - bounds.low[k];
-        if (std::isfinite(extent) && extent > 0. && std::isfinite(bounds.low[k]))
-            side = std::max(side, extent / CELLS_ALONG_LONGEST);
-    }
+        if (griddable(bounds, k))
+            side = std::max(side, (bounds.high[k] - bounds.low[k]) / CELLS_ALONG_LONGEST);
     for (std::size_t k = 0; k < gridded_ && k < bounds.low.size() && side > 0.; ++k)
     {
-        const double extent = bounds.high[k] - bounds.low[k];
-        if (!(std::isfinite(extent) && extent > 0. && std::isfinite(bounds.low[k])))
+        if (!griddable(bounds, k))
             continue;
+        const double extent = bounds.high[k] - bounds.low[k];
         cells_[k] = static_cast<std::size_t>(std::min(CELLS_ALONG_LONGEST, std::max(1., std::ceil(extent / side))));
         low_[k] = bounds.low[k];
         width_[k] = extent / static_cast<double>(cells_[k]);
@@ -131,16 +157,7 @@ void ompl_parc::SpaceTimeGrid::clear()
 
 double ompl_parc::SpaceTimeGrid::distanceOf(const double *values, const Query &query) const
 {
-    double squared = 0.;
-    for (std::size_t k = 0; k < dimension_; ++k)
-    {
-        const double diff = values[k + 1] - query.q[k];
-        squared += diff * diff;
-    }
-    const double deltaTime = std::fabs(values[0] - query.time), deltaSpace = std::sqrt(squared);
-    if (deltaSpace / query.vMax > deltaTime + query.epsilon)
-        return std::numeric_limits<double>::infinity();
-    return query.spaceWeight * deltaSpace + query.timeWeight * deltaTime;
+    return combine(squaredSpace(values + 1, query.q, dimension_), std::fabs(values[0] - query.time), query);
 }
 
 void ompl_parc::SpaceTimeGrid::consider(std::size_t i, const double *values, const Query &query, Best &best) const
@@ -150,12 +167,7 @@ void ompl_parc::SpaceTimeGrid::consider(std::size_t i, const double *values, con
         return;
     // A far point skips the square root: a squared space term above the squared best distance (by a margin far
     // above rounding) cannot give a distance as small.
-    double squared = 0.;
-    for (std::size_t k = 0; k < dimension_; ++k)
-    {
-        const double diff = values[k + 1] - query.q[k];
-        squared += diff * diff;
-    }
+    const double squared = squaredSpace(values + 1, query.q, dimension_);
     // (Only where the squares cannot underflow.)
     if (best.distance > TINY &&
         query.spaceWeight * query.spaceWeight * squared > best.distance * best.distance * (1. + RELATIVE_MARGIN))
@@ -165,7 +177,7 @@ void ompl_parc::SpaceTimeGrid::consider(std::size_t i, const double *values, con
     const double reach = query.vMax * (deltaTime + query.epsilon);
     if (reach > TINY && squared > reach * reach * (1. + RELATIVE_MARGIN))
         return;
-    const double d = distanceOf(values, query);
+    const double d = combine(squared, deltaTime, query);
     if (d < best.distance || (d == best.distance && i < best.index))
         best = {i, d};
 }
