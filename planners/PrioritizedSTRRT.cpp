@@ -25,6 +25,7 @@ ompl_parc::PrioritizedSTRRT::PrioritizedSTRRT(const ob::SpaceInformationPtr &si)
                               &PrioritizedSTRRT::getPriorityOrder);
     declareParam<unsigned int>("seed", this, &PrioritizedSTRRT::setSeed, &PrioritizedSTRRT::getSeed);
     declareParam<bool>("promote", this, &PrioritizedSTRRT::setPromote, &PrioritizedSTRRT::getPromote, "0,1");
+    declareParam<bool>("unblock", this, &PrioritizedSTRRT::setUnblock, &PrioritizedSTRRT::getUnblock, "0,1");
     declareParam<unsigned int>("sample_cap", this, &PrioritizedSTRRT::setSampleCap, &PrioritizedSTRRT::getSampleCap,
                                "0:1000:100000000");
     smoothing_.declareParameter(*this);

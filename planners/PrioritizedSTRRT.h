@@ -47,6 +47,10 @@ namespace ompl_parc
         /** \brief Promote a robot that cannot be planned to the front of the order and plan again (default on). */
         void setPromote(bool promote) { settings_.promote = promote; }
         bool getPromote() const { return settings_.promote; }
+        /** \brief Order the robots so that they get out of each other's way, from their paths planned alone
+            (BlockingOrder; default on); the given or shuffled order breaks ties. */
+        void setUnblock(bool unblock) { settings_.unblock = unblock; }
+        bool getUnblock() const { return settings_.unblock; }
         /** \brief ST-RRT iterations per robot in the first round (doubling each round); 0: no cap, one round. */
         void setSampleCap(unsigned int cap) { sampleCap_ = cap; }
         unsigned int getSampleCap() const { return sampleCap_; }

@@ -63,6 +63,23 @@ namespace
         return corridor({{0., -4.}, {-8., 0.}}, {{0., 0.}, {8., 0.}});
     }
 
+    /** In a patch of walledIn(): b's x coordinate at the first timestep at which a stands at (0, 0). */
+    double bWhereAParks(const Patch &patch)
+    {
+        std::vector<double> a(2), b(2);
+        for (std::size_t t = 0; t <= patch.paths[0].getArrival(); ++t)
+        {
+            patch.paths[0].getConfig(t, a.data());
+            if (a[0] == 0. && a[1] == 0.)
+            {
+                patch.paths[1].getConfig(t, b.data());
+                return b[0];
+            }
+        }
+        ADD_FAILURE() << "a never reaches (0, 0)";
+        return 0.;
+    }
+
     /** Solve \e problem with the PrioritizedSTRRT planner and validate its plan independently. */
     void expectPlannerSolves(const MultiRobotProblem &problem, const std::string &order)
     {
@@ -201,23 +218,33 @@ TEST(PrioritizedSTRRTSolver, PromotesARobotThatTheOrderWallsIn)
     sub.sampleCap = 20000;  // b's ST-RRT gives up after this many iterations instead of at the limit
     PrioritizedSTRRTSettings plain;
     plain.promote = false;
+    plain.unblock = false;  // the given order, a first
     Patch patch;
     EXPECT_FALSE(PrioritizedSTRRTSolver(plain).solve(si, sub, ob::timedPlannerTerminationCondition(60.), 3, patch));
 
-    ASSERT_TRUE(PrioritizedSTRRTSolver().solve(si, sub, ob::timedPlannerTerminationCondition(60.), 3, patch));
+    PrioritizedSTRRTSettings promoting = plain;
+    promoting.promote = true;
+    ASSERT_TRUE(PrioritizedSTRRTSolver(promoting).solve(si, sub, ob::timedPlannerTerminationCondition(60.), 3, patch));
     const auto report = validatePatch(problem, sub, patch);
     EXPECT_TRUE(report.valid) << report.message;
-    // b went first: it is past the gap when a first reaches (0, 0).
-    std::vector<double> a(2), b(2);
-    std::size_t t = 0;
-    for (;; ++t)
-    {
-        patch.paths[0].getConfig(t, a.data());
-        if (a[0] == 0. && a[1] == 0.)
-            break;
-    }
-    patch.paths[1].getConfig(t, b.data());
-    EXPECT_GT(b[0], 1.) << "a reached (0, 0) at timestep " << t;
+    EXPECT_GT(bWhereAParks(patch), 1.) << "b went first: it is past the gap when a first reaches (0, 0)";
+}
+
+TEST(PrioritizedSTRRTSolver, OrdersTheTeamSoThatNobodyIsWalledIn)
+{
+    // a's goal (0, 0) lies on b's way alone: the unblocking order (the default) plans b first, at the first try.
+    const auto problem = walledIn();
+    const auto &si = *problem.getSpaceInformation();
+    auto sub = wholeProblem(problem);
+    sub.sampleCap = 20000;
+    PrioritizedSTRRTSettings settings;
+    settings.promote = false;
+    ASSERT_TRUE(settings.unblock);
+    Patch patch;
+    ASSERT_TRUE(PrioritizedSTRRTSolver(settings).solve(si, sub, ob::timedPlannerTerminationCondition(60.), 3, patch));
+    const auto report = validatePatch(problem, sub, patch);
+    EXPECT_TRUE(report.valid) << report.message;
+    EXPECT_GT(bWhereAParks(patch), 1.);
 }
 
 TEST(PrioritizedSTRRT, PlansInRoundsUntilTheStop)
@@ -227,6 +254,7 @@ TEST(PrioritizedSTRRT, PlansInRoundsUntilTheStop)
     {
         PrioritizedSTRRT planner(problem.getSpaceInformation());
         planner.params().setParam("promote", promote);
+        planner.params().setParam("unblock", "0");  // the given order, which walls b in
         planner.params().setParam("sample_cap", cap);
         planner.params().setParam("seed", "5");
         const auto pdef = problem.createProblemDefinition();

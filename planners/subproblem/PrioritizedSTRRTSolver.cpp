@@ -1,6 +1,7 @@
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
 
 #include "ompl_parc/planners/STRRTstar.h"
+#include "ompl_parc/planners/subproblem/BlockingOrder.h"
 #include "ompl_parc/spacetime/SpaceTimeMotionValidator.h"
 #include "ompl_parc/spacetime/SpaceTimeStateSpace.h"
 #include "ompl_parc/statespaces/SpaceRegistryLock.h"
@@ -94,6 +95,29 @@ ompl_parc::TimedPath ompl_parc::PrioritizedSTRRTSolver::planRobot(const ob::Stat
         ->layOnGrid(*pdef->getSolutionPath()->as<og::PathGeometric>());
 }
 
+std::vector<std::size_t> ompl_parc::PrioritizedSTRRTSolver::unblockedOrder(
+    const MultiRobotSpaceInformation &si, const Subproblem &subproblem, const MultiRobotSpaceInformation &local,
+    const std::vector<std::size_t> &order, const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed) const
+{
+    const auto &team = local.getRobots();
+    Tracks alone(team.size());
+    std::vector<CollisionBody> starts(team.size()), goals(team.size());
+    for (std::size_t k = 0; k < team.size(); ++k)
+    {
+        team[k]->computeBody(subproblem.starts[k].data(), starts[k]);
+        team[k]->computeBody(subproblem.goals[k].data(), goals[k]);
+        if (ptc)
+            continue;  // after the stop nobody is planned: the order no longer matters
+        const auto path =
+            planRobot(local.getCompositeSpace()->getRobotSpace(k),
+                      std::make_shared<DynamicObstacles>(team[k], si.getResolution()), subproblem.starts[k],
+                      subproblem.goals[k], 0, subproblem.cappedTermination(ptc), mixSeed(seed, 0xa10e + k));
+        if (!path.empty() && DynamicObstacles::fits(path))
+            alone[k] = DynamicObstacles::computeTrack(*team[k], path);
+    }
+    return BlockingOrder(std::move(alone), std::move(starts), std::move(goals)).order(order);
+}
+
 std::optional<std::size_t> ompl_parc::PrioritizedSTRRTSolver::planInOrder(
     const MultiRobotSpaceInformation &si, const Subproblem &subproblem, const MultiRobotSpaceInformation &local,
     const std::vector<std::size_t> &order, const Tracks &context, const ob::PlannerTerminationCondition &ptc,
@@ -169,6 +193,8 @@ bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &
         }
     std::vector<TimedPath> paths(size);
     std::vector<std::size_t> order = priorityOrder(size, seed);
+    if (settings_.unblock && size > 1)
+        order = unblockedOrder(si, subproblem, *local, order, ptc, seed);
     // The first order draws as before promotion existed; each later one with fresh samples.
     for (std::size_t attempt = 0;; ++attempt)
     {

@@ -28,6 +28,9 @@ namespace ompl_parc
            order, which then held the whole budget). At most as many orders as the team has robots are tried per call.
          */
         bool promote{true};
+        /** \brief Refine the priority order from each robot's path planned alone (BlockingOrder): a robot whose
+            start lies on another's way goes before it, one whose goal lies on another's way after it. */
+        bool unblock{true};
         /** \brief "off", "radius" or "knearest". */
         std::string rewiring{"off"};
         unsigned int batchSize{4096};
@@ -73,6 +76,14 @@ namespace ompl_parc
 
       private:
         using Tracks = std::vector<std::shared_ptr<const BodyTrack>>;
+
+        /** \brief \e order refined by BlockingOrder from each robot of \e local's team planned alone (a robot that
+            cannot be planned alone constrains nobody). */
+        std::vector<std::size_t> unblockedOrder(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
+                                                const MultiRobotSpaceInformation &local,
+                                                const std::vector<std::size_t> &order,
+                                                const ompl::base::PlannerTerminationCondition &ptc,
+                                                std::uint_fast32_t seed) const;
 
         /** \brief Plans the robots of \e local's team in \e order into \e paths (robots planned earlier and
             \e context as moving obstacles): the team position of the robot that could not be planned, or none if all
