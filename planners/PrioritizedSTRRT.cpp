@@ -10,8 +10,6 @@
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
-#include <climits>
-#include <cmath>
 
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
@@ -134,8 +132,7 @@ ob::PlannerStatus ompl_parc::PrioritizedSTRRT::solve(const ob::PlannerTerminatio
         bool retry = true;
         for (rounds_ = 0; !solved_ && !ptc && retry && (sampleCap_ > 0 || rounds_ == 0);)
         {
-            const double cap = std::ldexp(static_cast<double>(sampleCap_), static_cast<int>(std::min(rounds_, 64u)));
-            whole.sampleCap = static_cast<unsigned int>(std::min(cap, static_cast<double>(UINT_MAX)));
+            whole.sampleCap = Subproblem::doubledCap(sampleCap_, rounds_);
             solved_ =
                 solver.solve(*mrsi_, whole, ptc, rounds_ == 0 ? lastSeed_ : mixSeed(lastSeed_, rounds_), patch, retry);
             ++rounds_;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <climits>
 #include <mutex>
 #include <thread>
 
@@ -61,6 +62,15 @@ TEST_F(HeadOn, WindowEndpointsAndLocalBoundsFollowTheSettings)
     EXPECT_NEAR(sub.bounds[0].low[1], -2.5 - 1., 1e-9);
     EXPECT_NEAR(sub.bounds[0].high[1], -2.5 + 1., 1e-9);
     EXPECT_EQ(sub.sampleCap, settings.sampleCap);
+}
+
+TEST(Subproblem, DoubledCapsGrowGeometricallyUpToTheLargestCap)
+{
+    EXPECT_EQ(Subproblem::doubledCap(50000, 0), 50000u);
+    EXPECT_EQ(Subproblem::doubledCap(50000, 3), 400000u);
+    EXPECT_EQ(Subproblem::doubledCap(0, 10), 0u);  // no cap stays no cap
+    EXPECT_EQ(Subproblem::doubledCap(50000, 20), UINT_MAX);
+    EXPECT_EQ(Subproblem::doubledCap(1, 4000000000u), UINT_MAX);  // rounds past any shift width
 }
 
 TEST_F(HeadOn, InvalidEndpointsWidenOnlyTheirSide)

@@ -39,13 +39,7 @@ namespace
         env->addBox2D("top", 0., 1., 20., 0.6);
         env->addBox2D("bottom_left", -5.4, -1., 9.2, 0.6);
         env->addBox2D("bottom_right", 5.4, -1., 9.2, 0.6);
-        ob::RealVectorBounds bounds(2);
-        bounds.setLow(-10.);
-        bounds.setHigh(10.);
-        std::vector<RobotPtr> team = {std::make_shared<DiscRobot>("a", env, 0.5, bounds),
-                                      std::make_shared<DiscRobot>("b", env, 0.5, bounds)};
-        return MultiRobotProblem(std::make_shared<MultiRobotSpaceInformation>(team), std::move(starts),
-                                 std::move(goals), "corridor");
+        return test::discPair(env, std::move(starts), std::move(goals), 128., "corridor");
     }
 
     /** Disc 'a' (first priority) runs through the corridor from (-8, 0) to (8, 0); disc 'b' enters it from

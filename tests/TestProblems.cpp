@@ -15,23 +15,19 @@ ompl::base::PlannerStatus ompl_parc::test::solveWith(ompl::base::Planner &planne
     return planner.solve(ompl::base::timedPlannerTerminationCondition(limit));
 }
 
-namespace
+ompl_parc::MultiRobotProblem ompl_parc::test::discPair(const std::shared_ptr<Environment> &env,
+                                                       std::vector<std::vector<double>> starts,
+                                                       std::vector<std::vector<double>> goals, double resolution,
+                                                       const std::string &name)
 {
-    /** Two discs "a" and "b" (radius 0.5) in the 20 x 20 box around the origin among \e env's obstacles. */
-    ompl_parc::MultiRobotProblem discPair(const std::shared_ptr<ompl_parc::Environment> &env,
-                                          std::vector<std::vector<double>> starts,
-                                          std::vector<std::vector<double>> goals, double resolution,
-                                          const std::string &name)
-    {
-        ompl::base::RealVectorBounds bounds(2);
-        bounds.setLow(-10.);
-        bounds.setHigh(10.);
-        std::vector<ompl_parc::RobotPtr> team = {std::make_shared<ompl_parc::DiscRobot>("a", env, 0.5, bounds),
-                                                 std::make_shared<ompl_parc::DiscRobot>("b", env, 0.5, bounds)};
-        return ompl_parc::MultiRobotProblem(std::make_shared<ompl_parc::MultiRobotSpaceInformation>(team, resolution),
-                                            std::move(starts), std::move(goals), name);
-    }
-}  // namespace
+    ompl::base::RealVectorBounds bounds(2);
+    bounds.setLow(-10.);
+    bounds.setHigh(10.);
+    std::vector<RobotPtr> team = {std::make_shared<DiscRobot>("a", env, 0.5, bounds),
+                                  std::make_shared<DiscRobot>("b", env, 0.5, bounds)};
+    return MultiRobotProblem(std::make_shared<MultiRobotSpaceInformation>(team, resolution), std::move(starts),
+                             std::move(goals), name);
+}
 
 ompl_parc::MultiRobotProblem ompl_parc::test::twoDiscs(std::vector<double> startA, std::vector<double> goalA,
                                                        std::vector<double> startB, std::vector<double> goalB, bool wall,

@@ -4,6 +4,7 @@
 #include "ompl_parc/arc/Conflict.h"
 #include "ompl_parc/arc/Patch.h"
 #include "ompl_parc/arc/Subproblem.h"
+#include "ompl_parc/collision/Environment.h"
 #include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/model/MultiRobotProblem.h"
 #include "ompl_parc/validation/SolutionValidator.h"
@@ -11,11 +12,17 @@
 #include <ompl/base/Planner.h>
 #include <ompl/geometric/PathGeometric.h>
 
+#include <memory>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace ompl_parc::test
 {
+    /** \brief Two discs "a" and "b" (radius 0.5) in the 20 x 20 box around the origin among \e env's obstacles. */
+    MultiRobotProblem discPair(const std::shared_ptr<Environment> &env, std::vector<std::vector<double>> starts,
+                               std::vector<std::vector<double>> goals, double resolution, const std::string &name);
+
     /** \brief Two discs (radius 0.5) in an empty 20 x 20 box, optionally with a wall box at the origin. */
     MultiRobotProblem twoDiscs(std::vector<double> startA, std::vector<double> goalA, std::vector<double> startB,
                                std::vector<double> goalB, bool wall = false, double resolution = 128.);

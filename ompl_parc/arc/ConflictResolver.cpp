@@ -7,8 +7,6 @@
 #include <ompl/util/Time.h>
 
 #include <algorithm>
-#include <climits>
-#include <cmath>
 #include <numeric>
 
 namespace ob = ompl::base;
@@ -133,8 +131,7 @@ ompl_parc::Subproblem ompl_parc::ConflictResolver::makeGlobal(const MultiRobotPl
     sub.windowEnd = latestArrival(plan, team);
     fillEndpoints(plan, sub);
     fillContext(plan, sub);
-    const double cap = std::ldexp(static_cast<double>(settings_.sampleCap), static_cast<int>(std::min(round, 64u)));
-    sub.sampleCap = static_cast<unsigned int>(std::min(cap, static_cast<double>(UINT_MAX)));
+    sub.sampleCap = Subproblem::doubledCap(settings_.sampleCap, round);
     return sub;
 }
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <climits>
 #include <cmath>
 
 std::string ompl_parc::Subproblem::check(const MultiRobotSpaceInformation &si) const
@@ -50,6 +51,12 @@ ompl::base::PlannerTerminationCondition ompl_parc::Subproblem::cappedTermination
     const unsigned int cap = sampleCap;
     return ompl::base::plannerOrTerminationCondition(
         ptc, ompl::base::PlannerTerminationCondition([iterations, cap] { return ++*iterations > cap; }));
+}
+
+unsigned int ompl_parc::Subproblem::doubledCap(unsigned int cap, unsigned int round)
+{
+    const double doubled = std::ldexp(static_cast<double>(cap), static_cast<int>(std::min(round, 64u)));
+    return static_cast<unsigned int>(std::min(doubled, static_cast<double>(UINT_MAX)));
 }
 
 void ompl_parc::Subproblem::fillContext(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan)

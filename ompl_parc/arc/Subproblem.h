@@ -32,6 +32,10 @@ namespace ompl_parc
         std::vector<ompl::base::RealVectorBounds> bounds;
         /** \brief Largest number of planner iterations; 0: no cap. */
         unsigned int sampleCap{0};
+
+        /** \brief \e cap x 2^\e round, clamped to the largest sampleCap: the cap of a retry's round, so that rounds
+            grow their effort geometrically. */
+        static unsigned int doubledCap(unsigned int cap, unsigned int round);
         /** \brief Context: robots outside the team whose plans come near it during the window, and those plans
             over [windowStart, windowEnd] (timestep 0 = windowStart, held afterwards). A time-aware solver
             (SubproblemSolver::usesContext()) avoids them, so that a patch seldom makes new conflicts with the
