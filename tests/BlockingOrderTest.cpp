@@ -1,61 +1,49 @@
 #include "ompl_parc/planners/subproblem/BlockingOrder.h"
 #include "ompl_parc/robots/DiscRobot.h"
-#include "ompl_parc/spacetime/DynamicObstacles.h"
 
 #include <gtest/gtest.h>
-#include <array>
-#include <cmath>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/util/Exception.h>
+
+#include <algorithm>
+#include <cmath>
 
 using namespace ompl_parc;
 
 namespace
 {
-    using Point = std::array<double, 2>;
-
     /** Unit discs in an empty 20 x 20 square; robot k goes straight from starts[k] to goals[k] (one timestep per
         half unit), as if planned alone. */
-    class Team
+    struct Team
     {
-      public:
-        Team(std::vector<Point> starts, std::vector<Point> goals)
+        Team(std::vector<std::vector<double>> s, std::vector<std::vector<double>> g)
+            : starts(std::move(s)), goals(std::move(g))
         {
             ompl::base::RealVectorBounds bounds(2);
             bounds.setLow(-10.);
             bounds.setHigh(10.);
-            robot_ = std::make_shared<DiscRobot>("disc", std::make_shared<Environment>(), 0.5, bounds);
+            const auto disc = std::make_shared<DiscRobot>("disc", std::make_shared<Environment>(), 0.5, bounds);
             for (std::size_t k = 0; k < starts.size(); ++k)
             {
-                const Point s = starts[k], g = goals[k];
-                const auto steps = static_cast<std::size_t>(std::ceil(2. * std::hypot(g[0] - s[0], g[1] - s[1])));
+                const auto &a = starts[k], &b = goals[k];
+                const auto steps = static_cast<std::size_t>(std::ceil(2. * std::hypot(b[0] - a[0], b[1] - a[1])));
                 std::vector<double> flat;
                 for (std::size_t t = 0; t <= steps; ++t)
                 {
                     const double f = steps == 0 ? 1. : static_cast<double>(t) / static_cast<double>(steps);
-                    flat.push_back(s[0] + f * (g[0] - s[0]));
-                    flat.push_back(s[1] + f * (g[1] - s[1]));
+                    flat.push_back(a[0] + f * (b[0] - a[0]));
+                    flat.push_back(a[1] + f * (b[1] - a[1]));
                 }
-                tracks.push_back(DynamicObstacles::computeTrack(*robot_, TimedPath::fromDense(2, flat)));
-                startBodies.push_back(bodyAt(s));
-                goalBodies.push_back(bodyAt(g));
+                robots.push_back(disc);
+                alone.push_back(TimedPath::fromDense(2, flat));
             }
         }
 
-        BlockingOrder order() const { return BlockingOrder(tracks, startBodies, goalBodies); }
+        BlockingOrder order() const { return BlockingOrder(robots, alone, starts, goals); }
 
-        std::vector<std::shared_ptr<const BodyTrack>> tracks;
-        std::vector<CollisionBody> startBodies, goalBodies;
-
-      private:
-        CollisionBody bodyAt(const Point &q) const
-        {
-            CollisionBody body;
-            robot_->computeBody(q.data(), body);
-            return body;
-        }
-
-        RobotPtr robot_;
+        std::vector<std::vector<double>> starts, goals;
+        std::vector<RobotPtr> robots;
+        std::vector<TimedPath> alone;
     };
 
     using Order = std::vector<std::size_t>;
@@ -104,10 +92,37 @@ TEST(BlockingOrder, BreaksACycleByTheBaseOrder)
     EXPECT_EQ(order.order({1, 0}), (Order{1, 0}));
 }
 
+TEST(BlockingOrder, InACycleTheRobotWithFewestPredecessorsLeftGoesFirst)
+{
+    // Robots 0 and 1 make a cycle (0 starts and ends on 1's way); robot 2 parks at (0, 0), on both their ways.
+    const Team team({{-2., 0.}, {-5., 0.}, {0., -5.}}, {{2., 0.}, {5., 0.}, {0., 0.}});
+    const auto order = team.order();
+    EXPECT_TRUE(order.before(0, 2));
+    EXPECT_TRUE(order.before(1, 2));
+    // Nobody is free; robot 0 waits for one robot, robot 2 for two: 0 goes first though 2 comes first in the base.
+    EXPECT_EQ(order.order({2, 0, 1}), (Order{0, 1, 2}));
+}
+
+TEST(BlockingOrder, LongPathsAreTestedBlockByBlock)
+{
+    // Robot 1 crosses robot 0's goal late in a path of many blocks, and passes far from robot 0's start.
+    Team team({{0., -3.}, {-9., 0.}}, {{0., 0.}, {9., 0.}});
+    std::vector<double> flat;
+    for (std::size_t t = 0; t <= 10 * BlockingOrder::BLOCK; ++t)  // waits at (-9, 0), then goes at unit speed
+    {
+        const double x = std::min(9., -9. + std::max(0., static_cast<double>(t) - 9. * BlockingOrder::BLOCK));
+        flat.insert(flat.end(), {x, 0.});
+    }
+    team.alone[1] = TimedPath::fromDense(2, flat);
+    const auto order = team.order();
+    EXPECT_TRUE(order.before(1, 0));
+    EXPECT_FALSE(order.before(0, 1));
+}
+
 TEST(BlockingOrder, ARobotWithoutAPathConstrainsNobody)
 {
     Team team({{0., -3.}, {-5., 0.}}, {{0., 0.}, {5., 0.}});
-    team.tracks[1] = nullptr;  // robot 1 could not be planned alone
+    team.alone[1] = TimedPath();  // robot 1 could not be planned alone
     const auto order = team.order();
     EXPECT_FALSE(order.before(1, 0));
     EXPECT_EQ(order.order({0, 1}), (Order{0, 1}));
@@ -116,7 +131,8 @@ TEST(BlockingOrder, ARobotWithoutAPathConstrainsNobody)
 TEST(BlockingOrder, RejectsMismatchedInputs)
 {
     const Team team({{0., -3.}, {-5., 0.}}, {{0., 0.}, {5., 0.}});
-    EXPECT_THROW(BlockingOrder(team.tracks, {team.startBodies[0]}, team.goalBodies), ompl::Exception);
+    EXPECT_THROW(BlockingOrder(team.robots, team.alone, {team.starts[0]}, team.goals), ompl::Exception);
+    EXPECT_THROW(BlockingOrder(team.robots, team.alone, team.starts, {{0., 0.}, {5., 0., 1.}}), ompl::Exception);
     EXPECT_THROW(team.order().order({0}), ompl::Exception);
     EXPECT_THROW(team.order().order({0, 0}), ompl::Exception);
     EXPECT_THROW(team.order().order({0, 2}), ompl::Exception);

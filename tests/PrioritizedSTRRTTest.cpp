@@ -342,6 +342,6 @@ TEST(PrioritizedSTRRT, RejectsBadInputsClearly)
     EXPECT_THROW(planner.setRewiring("sometimes"), ompl::Exception);
     EXPECT_THROW(planner.setTimeBoundFactorIncrease(0.5), ompl::Exception);
     for (const char *name : {"range", "priority_order", "seed", "rewiring", "batch_size", "initial_time_bound_factor",
-                             "time_bound_factor_increase"})
+                             "time_bound_factor_increase", "promote", "unblock", "sample_cap"})
         EXPECT_TRUE(planner.params().hasParam(name)) << name;
 }

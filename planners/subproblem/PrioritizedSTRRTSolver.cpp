@@ -100,22 +100,16 @@ std::vector<std::size_t> ompl_parc::PrioritizedSTRRTSolver::unblockedOrder(
     const std::vector<std::size_t> &order, const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed) const
 {
     const auto &team = local.getRobots();
-    Tracks alone(team.size());
-    std::vector<CollisionBody> starts(team.size()), goals(team.size());
+    std::vector<TimedPath> alone(team.size());
     for (std::size_t k = 0; k < team.size(); ++k)
     {
-        team[k]->computeBody(subproblem.starts[k].data(), starts[k]);
-        team[k]->computeBody(subproblem.goals[k].data(), goals[k]);
         if (ptc)
-            continue;  // after the stop nobody is planned: the order no longer matters
-        const auto path =
-            planRobot(local.getCompositeSpace()->getRobotSpace(k),
-                      std::make_shared<DynamicObstacles>(team[k], si.getResolution()), subproblem.starts[k],
-                      subproblem.goals[k], 0, subproblem.cappedTermination(ptc), mixSeed(seed, 0xa10e + k));
-        if (!path.empty() && DynamicObstacles::fits(path))
-            alone[k] = DynamicObstacles::computeTrack(*team[k], path);
+            return order;  // after the stop nobody is planned: the order no longer matters
+        alone[k] = planRobot(local.getCompositeSpace()->getRobotSpace(k),
+                             std::make_shared<DynamicObstacles>(team[k], si.getResolution()), subproblem.starts[k],
+                             subproblem.goals[k], 0, subproblem.cappedTermination(ptc), mixSeed(seed, 0xa10e + k));
     }
-    return BlockingOrder(std::move(alone), std::move(starts), std::move(goals)).order(order);
+    return BlockingOrder(team, alone, subproblem.starts, subproblem.goals, ptc).order(order);
 }
 
 std::optional<std::size_t> ompl_parc::PrioritizedSTRRTSolver::planInOrder(
@@ -195,7 +189,7 @@ bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &
     std::vector<std::size_t> order = priorityOrder(size, seed);
     if (settings_.unblock && size > 1)
         order = unblockedOrder(si, subproblem, *local, order, ptc, seed);
-    // The first order draws as before promotion existed; each later one with fresh samples.
+    // The first order draws with the solve's seed, each later one with fresh samples.
     for (std::size_t attempt = 0;; ++attempt)
     {
         bool hopeless = false;

@@ -71,14 +71,15 @@ namespace ompl_parc
                    const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed, Patch &patch,
                    bool &retry) const;
 
-        /** \brief The order (positions in the team) in which a solve with \e seed plans a team of \e size. */
+        /** \brief The base order (positions in the team) of a solve with \e seed for a team of \e size: the given
+            or shuffled one, before settings.unblock refines it and promotion changes it. */
         std::vector<std::size_t> priorityOrder(std::size_t size, std::uint_fast32_t seed) const;
 
       private:
         using Tracks = std::vector<std::shared_ptr<const BodyTrack>>;
 
-        /** \brief \e order refined by BlockingOrder from each robot of \e local's team planned alone (a robot that
-            cannot be planned alone constrains nobody). */
+        /** \brief \e order refined by BlockingOrder from each robot of \e local's team planned alone (the path of
+            a robot that cannot be planned alone constrains nobody); \e order itself once \e ptc has fired. */
         std::vector<std::size_t> unblockedOrder(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
                                                 const MultiRobotSpaceInformation &local,
                                                 const std::vector<std::size_t> &order,
