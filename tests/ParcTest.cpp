@@ -239,7 +239,7 @@ TEST_P(ParcSolves, AndTheIndependentValidatorAgrees)
     parc.setWorkers(workers);
     parc.setOptimistic(optimistic);
     parc.setSeed(4);
-    // Typically 0.05 s (1 s under TSan), but under TSan about 1 run in 80 of planar_cross16_W4 took 52-56 s (the
+    // Typically 0.05 s (1 s under TSan), but under TSan 2 of 320 runs of planar_cross16_W4 took 52-56 s (the
     // interleaving of 4 workers on 2 cores changes the batches, and one team's PP-ST-RRT repairs ran into their
     // sample caps): the limit is far above that, as this test checks the plan, not the speed.
     ASSERT_EQ(test::solveWith(parc, problem, 240.), ob::PlannerStatus::EXACT_SOLUTION) << parc.getStatusMessage();
