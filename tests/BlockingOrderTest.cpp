@@ -1,3 +1,5 @@
+#include "TestProblems.h"
+
 #include "ompl_parc/planners/subproblem/BlockingOrder.h"
 #include "ompl_parc/robots/DiscRobot.h"
 
@@ -6,7 +8,6 @@
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
-#include <cmath>
 
 using namespace ompl_parc;
 
@@ -25,17 +26,8 @@ namespace
             const auto disc = std::make_shared<DiscRobot>("disc", std::make_shared<Environment>(), 0.5, bounds);
             for (std::size_t k = 0; k < starts.size(); ++k)
             {
-                const auto &a = starts[k], &b = goals[k];
-                const auto steps = static_cast<std::size_t>(std::ceil(2. * std::hypot(b[0] - a[0], b[1] - a[1])));
-                std::vector<double> flat;
-                for (std::size_t t = 0; t <= steps; ++t)
-                {
-                    const double f = steps == 0 ? 1. : static_cast<double>(t) / static_cast<double>(steps);
-                    flat.push_back(a[0] + f * (b[0] - a[0]));
-                    flat.push_back(a[1] + f * (b[1] - a[1]));
-                }
                 robots.push_back(disc);
-                alone.push_back(TimedPath::fromDense(2, flat));
+                alone.push_back(TimedPath::fromDense(2, test::straightLine(starts[k], goals[k], 2.)));
             }
         }
 

@@ -7,28 +7,17 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 
 namespace
 {
-    /** An axis-aligned box (single precision, as CollisionBody::getBox() gives). */
+    /** An axis-aligned box, grown by CollisionBody::expandBox(). */
     struct Box
     {
-        std::array<float, 3> lo{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
-                                std::numeric_limits<float>::max()};
-        std::array<float, 3> hi{std::numeric_limits<float>::lowest(), std::numeric_limits<float>::lowest(),
-                                std::numeric_limits<float>::lowest()};
+        std::array<double, 3> lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
 
-        void add(const ompl_parc::CollisionBody &body)
-        {
-            std::array<float, 3> l, h;
-            body.getBox(l, h);
-            for (int d = 0; d < 3; ++d)
-            {
-                lo[d] = std::min(lo[d], l[d]);
-                hi[d] = std::max(hi[d], h[d]);
-            }
-        }
+        void add(const ompl_parc::CollisionBody &body) { body.expandBox(lo, hi); }
 
         bool overlaps(const Box &other) const
         {
