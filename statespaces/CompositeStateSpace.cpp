@@ -1,5 +1,6 @@
 #include "ompl_parc/statespaces/CompositeStateSpace.h"
 
+#include "ompl_parc/statespaces/HugePageMemory.h"
 #include "ompl_parc/statespaces/SpaceRegistryLock.h"
 
 #include <ompl/util/Exception.h>
@@ -14,10 +15,6 @@
 #include <new>
 #include <string>
 
-#ifdef __linux__
-#include <sys/mman.h>
-#endif
-
 namespace ob = ompl::base;
 
 namespace
@@ -27,38 +24,15 @@ namespace
         return (bytes + alignof(std::max_align_t) - 1) / alignof(std::max_align_t) * alignof(std::max_align_t);
     }
 
-    /** \brief The allocation that the states of one allocStates() call share. It counts the states not yet freed
-        and goes with the last. From 512 KiB on it is mapped on its own, rounded up to whole 2 MiB pages, and
-        marked for transparent huge pages (at most 4x the memory, for one path, against 128+ faults of 4 KiB). */
+    /** \brief The allocation that the states of one allocStates() call share (HugePageMemory: one path's states
+        are written all over as soon as they are placed). It counts the states not yet freed and goes with the
+        last. */
     class SharedStates
     {
       public:
         static SharedStates *create(std::size_t bytes, std::size_t states)
         {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-            constexpr std::size_t hugePage = std::size_t{2} << 20;
-            if (bytes >= hugePage / 4 && bytes <= std::numeric_limits<std::size_t>::max() / 2)
-            {
-                // Map one huge page more than needed and keep the 2 MiB-aligned part: only aligned 2 MiB ranges
-                // can be huge pages.
-                const std::size_t length = (bytes + hugePage - 1) / hugePage * hugePage;
-                void *raw =
-                    mmap(nullptr, length + hugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-                if (raw != MAP_FAILED)
-                {
-                    const auto start = reinterpret_cast<std::uintptr_t>(raw);
-                    const std::uintptr_t aligned = (start + hugePage - 1) & ~std::uintptr_t{hugePage - 1};
-                    if (aligned > start)
-                        munmap(raw, aligned - start);
-                    if (const std::size_t tail = start + hugePage - aligned; tail > 0)
-                        munmap(reinterpret_cast<void *>(aligned + length), tail);
-                    // Only a hint: where transparent huge pages are off this is ordinary memory.
-                    madvise(reinterpret_cast<void *>(aligned), length, MADV_HUGEPAGE);
-                    return new (reinterpret_cast<void *>(aligned)) SharedStates(length, states, true);
-                }
-            }
-#endif
-            return new (::operator new(bytes)) SharedStates(bytes, states, false);
+            return new (ompl_parc::HugePageMemory::allocate(bytes)) SharedStates(bytes, states);
         }
 
         /** \brief One of its states was freed: the last one frees the allocation. */
@@ -67,28 +41,15 @@ namespace
             if (live_.fetch_sub(1, std::memory_order_acq_rel) != 1)
                 return;
             const std::size_t bytes = bytes_;
-            const bool mapped = mapped_;
             this->~SharedStates();
-#ifdef __linux__
-            if (mapped)
-            {
-                munmap(static_cast<void *>(this), bytes);
-                return;
-            }
-#endif
-            static_cast<void>(bytes);
-            static_cast<void>(mapped);
-            ::operator delete(static_cast<void *>(this));
+            ompl_parc::HugePageMemory::deallocate(static_cast<void *>(this), bytes);
         }
 
       private:
-        SharedStates(std::size_t bytes, std::size_t states, bool mapped) : live_(states), bytes_(bytes), mapped_(mapped)
-        {
-        }
+        SharedStates(std::size_t bytes, std::size_t states) : live_(states), bytes_(bytes) {}
 
         std::atomic<std::size_t> live_;
         std::size_t bytes_;
-        bool mapped_;
     };
 }  // namespace
 

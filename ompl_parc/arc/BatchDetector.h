@@ -5,6 +5,7 @@
 #include "ompl_parc/arc/ConflictDetector.h"
 #include "ompl_parc/arc/RepairCache.h"
 #include "ompl_parc/parallel/WorkerPool.h"
+#include "ompl_parc/statespaces/HugePageMemory.h"
 
 #include <ompl/base/PlannerTerminationCondition.h>
 
@@ -67,9 +68,9 @@ namespace ompl_parc
             end of a detect() call, and comes back when one of its robots is invalidated. A call costs O(pairs
             still in play), not O(all pairs): at 1024 robots there are 523 776 pairs, of which a few thousand have
             a conflict or a changed robot. */
-        std::vector<std::size_t> live_;
+        std::vector<std::size_t, HugePageAllocator<std::size_t>> live_;  // huge pages: see ConflictDetector
         /** \brief Per pair, 1 while it is in the live list. */
-        std::vector<char> isLive_;
+        std::vector<char, HugePageAllocator<char>> isLive_;
     };
 }  // namespace ompl_parc
 

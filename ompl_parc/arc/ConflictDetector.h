@@ -6,6 +6,7 @@
 #include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/model/MultiRobotSpaceInformation.h"
 #include "ompl_parc/robots/DiscRobot.h"
+#include "ompl_parc/statespaces/HugePageMemory.h"
 
 #include <algorithm>
 #include <array>
@@ -139,11 +140,14 @@ namespace ompl_parc
         std::vector<const DiscRobot *> discs_;
         std::unique_ptr<std::mutex[]> sweptMutex_;
         std::size_t robots_;
-        std::vector<std::size_t> frontier_;
+        /** \brief The per-pair arrays are written all over once the first scan runs: huge pages (HugePageMemory). */
+        template <typename T>
+        using PairArray = std::vector<T, HugePageAllocator<T>>;
+        PairArray<std::size_t> frontier_;
         /** \brief Per pair, 1 if its frontier is a conflict a scan found (reported again without a check until an
             invalidation reaches it); char, not bool, so that workers write their own pairs' entries safely. */
-        std::vector<char> knownConflict_;
-        std::vector<std::pair<std::size_t, std::size_t>> pairs_;
+        PairArray<char> knownConflict_;
+        PairArray<std::pair<std::size_t, std::size_t>> pairs_;
         /** \brief Every pair index, for findEarliest(); built at its first call. */
         std::vector<std::size_t> allPairs_;
     };
