@@ -12,15 +12,6 @@ namespace
     /** Boxes closer than this count as overlapping, so that rounding in the narrow phase can never report
         a collision the broad phase ruled out. */
     constexpr double BOX_MARGIN = 1e-9;
-
-    bool boxesOverlap(const std::pair<std::array<double, 3>, std::array<double, 3>> &a,
-                      const std::pair<std::array<double, 3>, std::array<double, 3>> &b)
-    {
-        bool overlap = true;
-        for (int d = 0; d < 3; ++d)
-            overlap = overlap && a.first[d] <= b.second[d] + BOX_MARGIN && b.first[d] <= a.second[d] + BOX_MARGIN;
-        return overlap;
-    }
 }  // namespace
 
 ompl_parc::ConflictDetector::ConflictDetector(const MultiRobotSpaceInformation &si, std::size_t segmentLength)
@@ -60,19 +51,18 @@ const ompl_parc::ConflictDetector::SweptBounds &ompl_parc::ConflictDetector::swe
     std::vector<double> q(model.getDimension()), lo(model.getDimension()), hi(model.getDimension());
     const auto boxOf = [&](std::size_t from, std::size_t to)  // timesteps [from, to)
     {
-        constexpr double INF = std::numeric_limits<double>::infinity();
-        Box box{{INF, INF, INF}, {-INF, -INF, -INF}};
+        BoundingBox box;
         if (to > from)  // kinds that bound their body from a box of configurations: from the plan's pieces
         {
             plan.getPath(robot).bounds(from, to - 1, lo.data(), hi.data());
-            if (model.expandBoxOver(lo.data(), hi.data(), box.first, box.second))
+            if (model.expandBoxOver(lo.data(), hi.data(), box.lo, box.hi))
                 return box;
         }
         for (std::size_t t = from; t < to; ++t)
         {
             cursor.get(t, q.data());
             model.computeBody(q.data(), scratch);
-            scratch.expandBox(box.first, box.second);
+            box.add(scratch);
         }
         return box;
     };
@@ -224,7 +214,7 @@ std::vector<ompl_parc::Conflict> ompl_parc::ConflictDetector::scan(const MultiRo
             {
                 const std::size_t segment = t / segmentLength_;
                 a.boxedUntil = (segment + 1) * segmentLength_;
-                if (!boxesOverlap(boxAt(*swept[i], segment), boxAt(*swept[j], segment)))
+                if (!boxAt(*swept[i], segment).overlaps(boxAt(*swept[j], segment), BOX_MARGIN))
                     a.next = std::min(a.boxedUntil, a.end + 1);  // the whole rest of the segment is clear
             }
             if (a.next == t)

@@ -2,6 +2,7 @@
 #define OMPL_PARC_CONFLICT_DETECTOR_
 
 #include "ompl_parc/arc/Conflict.h"
+#include "ompl_parc/collision/BoundingBox.h"
 #include "ompl_parc/collision/CollisionBody.h"
 #include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/model/MultiRobotSpaceInformation.h"
@@ -111,14 +112,12 @@ namespace ompl_parc
         const std::pair<std::size_t, std::size_t> &getPair(std::size_t index) const { return pairs_[index]; }
 
       private:
-        using Box = std::pair<std::array<double, 3>, std::array<double, 3>>;
-
         /** \brief One robot's swept bounds: \e segments[k] is valid for k < \e valid; \e finalBox (the
             body at arrival, used past the last segment) and the segment count while \e current. */
         struct SweptBounds
         {
-            std::vector<Box> segments;
-            Box finalBox;
+            std::vector<BoundingBox> segments;
+            BoundingBox finalBox;
             std::size_t valid{0};
             bool current{false};
         };
@@ -128,7 +127,7 @@ namespace ompl_parc
                                        CollisionBody &scratch);
 
         /** \brief Robot \e robot's bounds at segment \e segment (the final box past its last segment). */
-        static const Box &boxAt(const SweptBounds &bounds, std::size_t segment)
+        static const BoundingBox &boxAt(const SweptBounds &bounds, std::size_t segment)
         {
             return segment < bounds.segments.size() ? bounds.segments[segment] : bounds.finalBox;
         }

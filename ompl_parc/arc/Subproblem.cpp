@@ -1,5 +1,6 @@
 #include "ompl_parc/arc/Subproblem.h"
 
+#include "ompl_parc/collision/BoundingBox.h"
 #include "ompl_parc/collision/CapsuleCollision.h"
 #include "ompl_parc/collision/CollisionBody.h"
 #include "ompl_parc/model/MultiRobotPlan.h"
@@ -74,29 +75,23 @@ void ompl_parc::Subproblem::fillContext(const MultiRobotSpaceInformation &si, co
         plan.getConfig(r, t, q.data());
         si.getRobot(r)->computeBody(q.data(), out);
     };
-    using Box = std::array<std::array<double, 3>, 2>;
     const auto boxOf = [&](std::size_t r)
     {
-        Box box{{{HUGE_VAL, HUGE_VAL, HUGE_VAL}, {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}}};
+        BoundingBox box;
         for (std::size_t t = windowStart;; t = std::min(t + stride, windowEnd))
         {
             bodyAt(r, t, body);
-            body.expandBox(box[0], box[1]);
+            box.add(body);
             if (t == windowEnd)
                 break;
         }
         return box;
     };
-    Box team{{{HUGE_VAL, HUGE_VAL, HUGE_VAL}, {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}}};
+    BoundingBox team;
     std::vector<CollisionBody> starts(robots.size()), goals(robots.size());
     for (std::size_t k = 0; k < robots.size(); ++k)
     {
-        const Box box = boxOf(robots[k]);
-        for (int d = 0; d < 3; ++d)
-        {
-            team[0][d] = std::min(team[0][d], box[0][d] - MARGIN);
-            team[1][d] = std::max(team[1][d], box[1][d] + MARGIN);
-        }
+        team.add(boxOf(robots[k]));
         bodyAt(robots[k], windowStart, starts[k]);
         bodyAt(robots[k], windowEnd, goals[k]);
     }
@@ -108,11 +103,7 @@ void ompl_parc::Subproblem::fillContext(const MultiRobotSpaceInformation &si, co
             ++k;
             continue;
         }
-        const Box box = boxOf(r);
-        bool near = true;
-        for (int d = 0; d < 3; ++d)
-            near = near && box[0][d] <= team[1][d] && box[1][d] >= team[0][d];
-        if (!near)
+        if (!boxOf(r).overlaps(team, MARGIN))
             continue;
         bodyAt(r, windowStart, first);
         bodyAt(r, windowEnd, last);

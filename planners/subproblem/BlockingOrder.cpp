@@ -1,33 +1,16 @@
 #include "ompl_parc/planners/subproblem/BlockingOrder.h"
 
+#include "ompl_parc/collision/BoundingBox.h"
 #include "ompl_parc/collision/CapsuleCollision.h"
 #include "ompl_parc/collision/CollisionBody.h"
 
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <limits>
 
 namespace
 {
-    /** An axis-aligned box, grown by CollisionBody::expandBox(). */
-    struct Box
-    {
-        std::array<double, 3> lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-
-        void add(const ompl_parc::CollisionBody &body) { body.expandBox(lo, hi); }
-
-        bool overlaps(const Box &other) const
-        {
-            for (int d = 0; d < 3; ++d)
-                if (lo[d] > other.hi[d] || other.lo[d] > hi[d])
-                    return false;
-            return true;
-        }
-    };
-
     /** Whether \e body touches one of \e bodies from position \e first on. */
     bool touchesAny(const ompl_parc::CollisionBody &body, const std::vector<ompl_parc::CollisionBody> &bodies,
                     std::size_t first, std::size_t count)
@@ -48,7 +31,7 @@ ompl_parc::BlockingOrder::BlockingOrder(const std::vector<RobotPtr> &team, const
     if (alone.size() != size_ || starts.size() != size_ || goals.size() != size_)
         throw ompl::Exception("BlockingOrder", "one path alone, one start and one goal per robot needed");
     std::vector<CollisionBody> startBodies(size_), goalBodies(size_);
-    std::vector<Box> startBoxes(size_), goalBoxes(size_);
+    std::vector<BoundingBox> startBoxes(size_), goalBoxes(size_);
     for (std::size_t k = 0; k < size_; ++k)
     {
         if (starts[k].size() != team[k]->getDimension() || goals[k].size() != team[k]->getDimension() ||
@@ -71,7 +54,7 @@ ompl_parc::BlockingOrder::BlockingOrder(const std::vector<RobotPtr> &team, const
         for (std::size_t first = 0; first <= arrival && !ptc; first += BLOCK)
         {
             const std::size_t count = std::min(BLOCK, arrival + 1 - first);
-            Box box;
+            BoundingBox box;
             for (std::size_t k = 0; k < count; ++k)
             {
                 cursor.get(first + k, q.data());
