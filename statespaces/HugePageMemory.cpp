@@ -27,8 +27,13 @@ void *ompl_parc::HugePageMemory::allocate(std::size_t bytes)
         // pages.
         const std::size_t length = mappedLength(bytes);
         void *raw = mmap(nullptr, length + HUGE_PAGE, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-        if (raw == MAP_FAILED)
-            throw std::bad_alloc();
+        if (raw == MAP_FAILED)  // no room for the extra page: unaligned, on ordinary pages (freed the same way)
+        {
+            raw = mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+            if (raw == MAP_FAILED)
+                throw std::bad_alloc();
+            return raw;
+        }
         const auto start = reinterpret_cast<std::uintptr_t>(raw);
         const std::uintptr_t aligned = (start + HUGE_PAGE - 1) & ~std::uintptr_t{HUGE_PAGE - 1};
         if (aligned > start)

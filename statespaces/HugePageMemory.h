@@ -7,21 +7,21 @@
 namespace ompl_parc
 {
     /** \brief Large buffers that fill whole 2 MiB pages (transparent huge pages), allocated once and written all over
-        soon after: a team's composite states, the conflict detector's per-pair arrays.
+        soon after: a team's composite states, the conflict detectors' per-pair arrays.
 
         Why: the first write to each 4 KiB page of fresh memory is a page fault, and measured on this project's 2-core
-        virtual machine one costs about 14 us (6 MiB: 22 ms in 4 KiB pages, 0.4 ms in huge pages). At 256 robots the
-        detector's pair arrays alone are 240 pages, 3 ms before a 60 ms solve can start. From LARGE bytes on, a buffer
-        is mapped on its own, rounded up to whole 2 MiB pages (at most 4x the memory for a buffer of LARGE bytes, and
-        less the larger it is) and marked for huge pages; smaller ones come from operator new. Where huge pages are off
-        (or outside Linux) the mapping is ordinary memory. */
+        virtual machine one costs about 14 us (6 MiB: 22 ms in 4 KiB pages, 0.4 ms in huge pages). At 1024 robots the
+        detectors' per-pair arrays are about 4000 such pages, some 50 ms before the first scan. From LARGE bytes on, a
+        buffer is mapped on its own, rounded up to whole 2 MiB pages (at most 4x the memory, for a buffer of LARGE
+        bytes) and marked for huge pages; smaller ones come from operator new. Where huge pages are off, or the
+        mapping could not be aligned, it is ordinary memory; outside Linux every buffer comes from operator new. */
     class HugePageMemory
     {
       public:
         /** \brief From this size on a buffer gets huge pages. */
         static constexpr std::size_t LARGE = std::size_t{512} << 10;
 
-        /** \brief \e bytes of memory aligned for any type (throws std::bad_alloc). */
+        /** \brief \e bytes of memory aligned for any type of fundamental alignment (throws std::bad_alloc). */
         static void *allocate(std::size_t bytes);
 
         /** \brief Frees what allocate(\e bytes) returned. */
@@ -39,6 +39,8 @@ namespace ompl_parc
         HugePageAllocator(const HugePageAllocator<U> & /*other*/) noexcept
         {
         }
+
+        static_assert(alignof(T) <= alignof(std::max_align_t), "HugePageMemory aligns for fundamental types only");
 
         T *allocate(std::size_t count)
         {

@@ -42,8 +42,8 @@ TEST(BoundingBox, GrowsAroundBodiesAndBoxesAndAnEmptyOneOverlapsNothing)
     EXPECT_TRUE(box.overlaps(everything));
 }
 
-/* Boxes overlap when they touch, or lie within the margin of each other along every axis; a NaN bound (a body
-   computed from a broken configuration) counts as overlapping, so a broad phase never skips the exact test for it. */
+/* Boxes overlap when they touch, or lie within the margin of each other along every axis; a NaN bound set on a box
+   counts as overlapping. */
 TEST(BoundingBox, OverlapWithinTheMarginAndOnNaN)
 {
     BoundingBox a, b;

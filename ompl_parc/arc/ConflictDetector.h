@@ -10,7 +10,6 @@
 #include "ompl_parc/statespaces/HugePageMemory.h"
 
 #include <algorithm>
-#include <array>
 #include <functional>
 #include <memory>
 #include <mutex>

@@ -7,7 +7,6 @@
 #include "ompl_parc/model/MultiRobotSpaceInformation.h"
 
 #include <algorithm>
-#include <array>
 #include <climits>
 #include <cmath>
 
@@ -64,7 +63,8 @@ void ompl_parc::Subproblem::fillContext(const MultiRobotSpaceInformation &si, co
 {
     others.clear();
     otherPaths.clear();
-    // A robot moves at most a quarter unit between two sampled bodies (vMax 1): boxes grow by that and more.
+    // A robot moves at most a quarter unit between two sampled bodies (vMax 1): boxes count as near within that and
+    // more.
     constexpr double MARGIN = 0.5;
     const auto stride = static_cast<std::size_t>(std::max(1., std::round(0.25 * si.getResolution())));
     CollisionBody body;

@@ -28,8 +28,8 @@ namespace ompl_parc
             }
         }
 
-        /** \brief True unless the boxes are more than \e margin apart along some axis. A NaN bound counts as
-            overlapping, so a broad phase never skips the exact test because of one. */
+        /** \brief True unless the boxes are more than \e margin apart along some axis. A NaN in \e lo or \e hi
+            counts as overlapping (add() does not produce one: the bodies' own box growth drops NaN). */
         bool overlaps(const BoundingBox &other, double margin = 0.) const
         {
             for (int d = 0; d < 3; ++d)
