@@ -7,6 +7,7 @@
 #include <sys/mman.h>
 #endif
 
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
 namespace
 {
     constexpr std::size_t HUGE_PAGE = std::size_t{2} << 20;
@@ -16,12 +17,19 @@ namespace
     {
         return (bytes + HUGE_PAGE - 1) / HUGE_PAGE * HUGE_PAGE;
     }
+
+    /** True if a buffer of \e bytes is mapped on its own (allocate() and deallocate() must agree). */
+    bool mappedOnItsOwn(std::size_t bytes)
+    {
+        return bytes >= ompl_parc::HugePageMemory::LARGE && bytes <= std::numeric_limits<std::size_t>::max() / 2;
+    }
 }  // namespace
+#endif
 
 void *ompl_parc::HugePageMemory::allocate(std::size_t bytes)
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-    if (bytes >= LARGE && bytes <= std::numeric_limits<std::size_t>::max() / 2)
+    if (mappedOnItsOwn(bytes))
     {
         // Map one huge page more than needed and keep the 2 MiB-aligned part: only aligned 2 MiB ranges can be huge
         // pages.
@@ -53,7 +61,7 @@ void ompl_parc::HugePageMemory::deallocate(void *memory, std::size_t bytes) noex
     if (memory == nullptr)
         return;
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-    if (bytes >= LARGE && bytes <= std::numeric_limits<std::size_t>::max() / 2)
+    if (mappedOnItsOwn(bytes))
     {
         munmap(memory, mappedLength(bytes));
         return;
