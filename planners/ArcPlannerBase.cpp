@@ -196,6 +196,13 @@ const ompl_parc::ArcStatistics &ompl_parc::ArcPlannerBase::getStatistics() const
     return loop_ ? loop_->getStatistics() : none;
 }
 
+void ompl_parc::ArcPlannerBase::setup()
+{
+    ob::Planner::setup();
+    if (!workspace_)
+        workspace_ = std::make_unique<RepairWorkspace>(*mrsi_, options_.workers);
+}
+
 void ompl_parc::ArcPlannerBase::clear()
 {
     ob::Planner::clear();
@@ -246,7 +253,7 @@ std::optional<ob::PlannerStatus> ompl_parc::ArcPlannerBase::readProblem()
                                                                : ob::PlannerStatus::INVALID_GOAL);
     }
     problem_ = std::move(problem);
-    loop_ = std::make_unique<RepairLoop>(*problem_, seedOrDraw(seed_));
+    loop_ = std::make_unique<RepairLoop>(*problem_, seedOrDraw(seed_), *workspace_);
     return std::nullopt;
 }
 

@@ -3,6 +3,7 @@
 
 #include "ompl_parc/arc/ArcProgress.h"
 #include "ompl_parc/arc/RepairLoop.h"
+#include "ompl_parc/arc/RepairWorkspace.h"
 #include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/model/MultiRobotProblem.h"
 #include "ompl_parc/quality/SmoothingStep.h"
@@ -33,6 +34,9 @@ namespace ompl_parc
 
         using ompl::base::Planner::solve;  // keep solve(seconds) visible next to the override
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
+        /** \brief Also makes the worker pool and the conflict detectors (RepairWorkspace), so that solve() does not
+            spend its time on them; clear() keeps them for the next query. */
+        void setup() override;
         void clear() override;
         void getPlannerData(ompl::base::PlannerData &data) const override;
 
@@ -115,6 +119,8 @@ namespace ompl_parc
         std::string profile_{"mobile"};
         unsigned int seed_{0};
         std::unique_ptr<MultiRobotProblem> problem_;
+        /** \brief Made by setup(), used by every loop_ (declared before it: it outlives the loop). */
+        std::unique_ptr<RepairWorkspace> workspace_;
         std::unique_ptr<RepairLoop> loop_;
         SmoothingStep smoothing_;
         /** \brief The smoothed copy of the loop's plan after a smoothed solve (the loop keeps its own). */

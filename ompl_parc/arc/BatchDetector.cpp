@@ -13,19 +13,28 @@
 
 ompl_parc::BatchDetector::BatchDetector(ConflictDetector &detector, WorkerPool &pool, std::size_t horizon,
                                         std::size_t capacity, bool optimistic)
-    : detector_(detector),
-      pool_(pool),
-      horizon_(horizon),
-      capacity_(capacity),
-      optimistic_(optimistic),
-      live_(detector.getPairCount()),
-      isLive_(detector.getPairCount(), 1)
+    : detector_(detector), pool_(pool)
+{
+    configure(horizon, capacity, optimistic);
+    reset();
+}
+
+void ompl_parc::BatchDetector::configure(std::size_t horizon, std::size_t capacity, bool optimistic)
 {
     if (horizon == 0)
         throw ompl::Exception("BatchDetector", "the horizon must be at least 1 timestep");
     if (capacity == 0)
         throw ompl::Exception("BatchDetector", "a batch must hold at least one conflict");
+    horizon_ = horizon;
+    capacity_ = capacity;
+    optimistic_ = optimistic;
+}
+
+void ompl_parc::BatchDetector::reset()
+{
+    live_.resize(detector_.getPairCount());
     std::iota(live_.begin(), live_.end(), std::size_t{0});
+    isLive_.assign(detector_.getPairCount(), 1);
 }
 
 std::size_t ompl_parc::BatchDetector::chunkSize(std::size_t live) const

@@ -45,6 +45,13 @@ namespace ompl_parc
         BatchDetector(ConflictDetector &detector, WorkerPool &pool, std::size_t horizon, std::size_t capacity,
                       bool optimistic);
 
+        /** \brief Use \e horizon, \e capacity and \e optimistic (as in the constructor) from the next detect() on;
+            the pairs in play stay. Throws ompl::Exception for a zero horizon or capacity. */
+        void configure(std::size_t horizon, std::size_t capacity, bool optimistic);
+
+        /** \brief Every pair in play again (a new query; the detector's frontiers are reset apart). */
+        void reset();
+
         static constexpr std::size_t UNBOUNDED = std::numeric_limits<std::size_t>::max() / 2;
 
         /** \brief The next batch of \e plan (empty: conflict-free, or \e ptc fired), each conflict with its
@@ -59,8 +66,8 @@ namespace ompl_parc
       private:
         ConflictDetector &detector_;
         WorkerPool &pool_;
-        std::size_t horizon_, capacity_;
-        bool optimistic_;
+        std::size_t horizon_{0}, capacity_{0};
+        bool optimistic_{false};
         /** \brief The pair count of one chunk of \e live pairs in play (see the class documentation). */
         std::size_t chunkSize(std::size_t live) const;
 

@@ -32,6 +32,17 @@ ompl_parc::ConflictDetector::ConflictDetector(const MultiRobotSpaceInformation &
     knownConflict_.assign(pairs_.size(), 0);
 }
 
+void ompl_parc::ConflictDetector::reset()
+{
+    std::fill(frontier_.begin(), frontier_.end(), 0);
+    std::fill(knownConflict_.begin(), knownConflict_.end(), 0);
+    for (SweptBounds &bounds : swept_)
+    {
+        bounds.valid = 0;
+        bounds.current = false;
+    }
+}
+
 void ompl_parc::ConflictDetector::setSegmentLength(std::size_t segmentLength)
 {
     segmentLength_ = segmentLength;

@@ -52,6 +52,10 @@ namespace ompl_parc
 
         /** \brief Change H (0 disables the broad phase); drops all swept bounds. Not during a scan. */
         void setSegmentLength(std::size_t segmentLength);
+
+        /** \brief Forget every plan scanned so far: every frontier back to timestep 0, no known conflict, no swept
+            bounds. Keeps the memory (a new query on the same team faults in no fresh pages). Not during a scan. */
+        void reset();
         std::size_t getSegmentLength() const { return segmentLength_; }
 
         /** \brief The earliest conflict of \e plan over all pairs, ties broken by (first, second); none if

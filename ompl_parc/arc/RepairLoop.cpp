@@ -38,13 +38,16 @@ namespace
     }
 }  // namespace
 
-ompl_parc::RepairLoop::RepairLoop(const MultiRobotProblem &problem, std::uint_fast32_t seed)
+ompl_parc::RepairLoop::RepairLoop(const MultiRobotProblem &problem, std::uint_fast32_t seed, RepairWorkspace &workspace)
     : problem_(problem),
       seed_(seed),
       plan_(*problem.getSpaceInformation()),
       planned_(problem.getSpaceInformation()->getRobotCount(), 0),
-      detector_(*problem.getSpaceInformation())
+      workspace_(workspace)
 {
+    if (workspace.getDetector().getRobotCount() != problem.getRobotCount())
+        throw ompl::Exception("RepairLoop", "the workspace is for another team size");
+    workspace.reset();
 }
 
 ompl_parc::RepairLoop::~RepairLoop() = default;
@@ -57,12 +60,9 @@ void ompl_parc::RepairLoop::configure(RepairLoopOptions options)
         throw ompl::Exception("RepairLoop", "the horizon must be at least 1 timestep");
     if (options.batchPerWorker == 0)
         throw ompl::Exception("RepairLoop", "a batch must hold at least one conflict per worker");
-    if (!pool_ || pool_->getWorkerCount() != options.workers)
-        pool_ = std::make_unique<WorkerPool>(options.workers);
     resolver_ =
         std::make_unique<ConflictResolver>(*problem_.getSpaceInformation(), options.settings, options.hierarchy);
-    const std::size_t capacity = options.workers == 1 ? 1 : std::size_t{options.workers} * options.batchPerWorker;
-    batchDetector_ = std::make_unique<BatchDetector>(detector_, *pool_, options.horizon, capacity, options.optimistic);
+    workspace_.configure(options.workers, options.horizon, options.batchPerWorker, options.optimistic);
     options_ = std::move(options);
 }
 
@@ -91,7 +91,7 @@ bool ompl_parc::RepairLoop::planInitial(const ob::PlannerTerminationCondition &p
     OrTaskStatistics stats;
     // A robot counts as planned once, at its first path (local OR may find several).
     const auto counted = std::make_unique<std::atomic<bool>[]>(robots.size());
-    const auto paths = OrTaskRunner<TimedPath>(*pool_, options_.localOr)
+    const auto paths = OrTaskRunner<TimedPath>(workspace_.getPool(), options_.localOr)
                            .run(
                                robots.size(), ptc,
                                [&](std::size_t task, unsigned int attempt,
@@ -132,7 +132,7 @@ bool ompl_parc::RepairLoop::resolve(const ob::PlannerTerminationCondition &ptc)
         DetectedBatch batch;
         {
             StageClock clock(statistics_.detectionWall, statistics_.detectionCpu);
-            batch = batchDetector_->detect(plan_, cache_, options_.settings.window, ptc);
+            batch = workspace_.getBatchDetector().detect(plan_, cache_, options_.settings.window, ptc);
         }
         parallel_.projectedDetection += batch.projectedSeconds;
         if (batch.entries.empty())
@@ -163,7 +163,7 @@ bool ompl_parc::RepairLoop::repairBatch(const std::vector<BatchEntry> &batch,
     OrTaskStatistics stats;
     std::mutex traced;  // every resolve's calls and longest call, found or not (one lock per resolve)
     const auto repairs =
-        OrTaskRunner<Repair>(*pool_, options_.localOr)
+        OrTaskRunner<Repair>(workspace_.getPool(), options_.localOr)
             .run(
                 batch.size(), ptc,
                 [&](std::size_t task, unsigned int attempt, const ob::PlannerTerminationCondition &stop)
@@ -238,7 +238,7 @@ void ompl_parc::RepairLoop::applyRepair(const Repair &repair)
     const Subproblem &sub = repair.subproblem;
     repair.patch.spliceInto(plan_, sub);
     for (std::size_t robot : sub.robots)
-        batchDetector_->invalidate(robot, sub.windowStart);
+        workspace_.getBatchDetector().invalidate(robot, sub.windowStart);
     const std::size_t duration = repair.patch.getDuration();
     // A repair of every robot is not cached: every later conflict would grow to every robot (and P-ARC's batches to
     // one conflict each).
@@ -263,8 +263,9 @@ ompl::geometric::PathGeometricPtr ompl_parc::RepairLoop::buildSolutionPath() con
     states.resize(times.size());
     // One allocation for all states (few page faults: CompositeStateSpace::allocStates); the workers fill them.
     si->getCompositeSpace()->allocStates(states.size(), states.data());
-    const std::size_t w = pool_->getWorkerCount(), chunk = (states.size() + w - 1) / w;
-    pool_->run(
+    WorkerPool &pool = workspace_.getPool();
+    const std::size_t w = pool.getWorkerCount(), chunk = (states.size() + w - 1) / w;
+    pool.run(
         [&](unsigned int worker)
         {
             const std::size_t from = std::min(states.size(), worker * chunk),

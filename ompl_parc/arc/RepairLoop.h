@@ -5,12 +5,11 @@
 #include "ompl_parc/arc/ArcSettings.h"
 #include "ompl_parc/arc/ArcStatistics.h"
 #include "ompl_parc/arc/BatchDetector.h"
-#include "ompl_parc/arc/ConflictDetector.h"
 #include "ompl_parc/arc/ConflictResolver.h"
 #include "ompl_parc/arc/RepairCache.h"
+#include "ompl_parc/arc/RepairWorkspace.h"
 #include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/model/MultiRobotProblem.h"
-#include "ompl_parc/parallel/WorkerPool.h"
 
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/geometric/PathGeometric.h>
@@ -41,8 +40,8 @@ namespace ompl_parc
         ArcProgress *progress{nullptr};
     };
 
-    /** \brief The ARC / P-ARC engine: owns the plan being repaired, the conflict detector, the repair cache,
-        the resolver, the worker pool and the statistics, and runs the paper's pipeline on them.
+    /** \brief The ARC / P-ARC engine: owns the plan being repaired, the repair cache, the resolver and the
+        statistics, works with a RepairWorkspace's worker pool and detectors, and runs the paper's pipeline on them.
 
         planInitial() is the first stage (each robot planned alone; robots handed to workers as they free up,
         idle workers running extra attempts with local OR). resolve() then loops: detect the next batch of
@@ -56,8 +55,10 @@ namespace ompl_parc
     class RepairLoop
     {
       public:
-        /** \brief An engine for \e problem (kept by reference: it must outlive the loop) seeded with \e seed. */
-        RepairLoop(const MultiRobotProblem &problem, std::uint_fast32_t seed);
+        /** \brief An engine for \e problem seeded with \e seed, working in \e workspace (made for the same team;
+            reset here). Both are kept by reference and must outlive the loop. Throws ompl::Exception if the
+            workspace is for another team size. */
+        RepairLoop(const MultiRobotProblem &problem, std::uint_fast32_t seed, RepairWorkspace &workspace);
         ~RepairLoop();
 
         /** \brief Use \e options from the next stage on; keeps the plan, frontiers, cache and statistics. Throws
@@ -95,11 +96,10 @@ namespace ompl_parc
         RepairLoopOptions options_;
         MultiRobotPlan plan_;
         std::vector<char> planned_;
-        ConflictDetector detector_;
+        /** \brief The worker pool and the detectors (the planner's, made at its setup()). */
+        RepairWorkspace &workspace_;
         RepairCache cache_;
         std::unique_ptr<ConflictResolver> resolver_;
-        std::unique_ptr<WorkerPool> pool_;
-        std::unique_ptr<BatchDetector> batchDetector_;
         ArcStatistics statistics_;
         ParcStatistics parallel_;
     };
