@@ -198,9 +198,10 @@ const ompl_parc::ArcStatistics &ompl_parc::ArcPlannerBase::getStatistics() const
 
 void ompl_parc::ArcPlannerBase::setup()
 {
-    ob::Planner::setup();
+    // First: if it throws, the planner is not marked set up and the next solve() tries again.
     if (!workspace_)
         workspace_ = std::make_unique<RepairWorkspace>(*mrsi_, options_.workers);
+    ob::Planner::setup();
 }
 
 void ompl_parc::ArcPlannerBase::clear()
@@ -252,8 +253,9 @@ std::optional<ob::PlannerStatus> ompl_parc::ArcPlannerBase::readProblem()
         return ob::PlannerStatus(reason.rfind("start", 0) == 0 ? ob::PlannerStatus::INVALID_START
                                                                : ob::PlannerStatus::INVALID_GOAL);
     }
-    problem_ = std::move(problem);
-    loop_ = std::make_unique<RepairLoop>(*problem_, seedOrDraw(seed_), *workspace_);
+    auto loop = std::make_unique<RepairLoop>(*problem, seedOrDraw(seed_), *workspace_);
+    problem_ = std::move(problem);  // only with its loop: a later solve() reads the problem again otherwise
+    loop_ = std::move(loop);
     return std::nullopt;
 }
 

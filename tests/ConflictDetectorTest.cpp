@@ -122,16 +122,14 @@ TEST(ConflictDetector, BroadPhaseScansMatchBruteForceInBothModes)
     }
 }
 
-TEST(ConflictDetector, BroadPhaseMatchesBruteForceForArms)
+namespace
 {
-    // Planar arms: capsules, several per body; random joint-space walks around the start configurations.
-    std::mt19937 rng(23);
-    const auto problem = scenarios::createPlanarCross(8);
-    const auto &si = *problem.getSpaceInformation();
-    std::uniform_real_distribution<double> step(-0.05, 0.05);
-    std::uniform_int_distribution<int> length(20, 300);
-    for (int k = 0; k < 20; ++k)
+    /** Planar arms: capsules, several per body; random joint-space walks around the start configurations. */
+    MultiRobotPlan armWalkPlan(const MultiRobotProblem &problem, std::mt19937 &rng)
     {
+        const auto &si = *problem.getSpaceInformation();
+        std::uniform_real_distribution<double> step(-0.05, 0.05);
+        std::uniform_int_distribution<int> length(20, 300);
         MultiRobotPlan plan(si);
         for (std::size_t r = 0; r < si.getRobotCount(); ++r)
         {
@@ -144,9 +142,46 @@ TEST(ConflictDetector, BroadPhaseMatchesBruteForceForArms)
             }
             plan.setRobotPath(r, flat);
         }
-        for (std::size_t h : {0, 3, 64})
-            expectScansMatchBruteForce(si, plan, h);
+        return plan;
     }
+}  // namespace
+
+TEST(ConflictDetector, BroadPhaseMatchesBruteForceForArms)
+{
+    std::mt19937 rng(23);
+    const auto problem = scenarios::createPlanarCross(8);
+    for (int k = 0; k < 20; ++k)
+    {
+        const auto plan = armWalkPlan(problem, rng);
+        for (std::size_t h : {0, 3, 64})
+            expectScansMatchBruteForce(*problem.getSpaceInformation(), plan, h);
+    }
+}
+
+/* reset() between two plans (a planner's next query): the second plan's earliest conflict is a fresh detector's,
+   although the first plan's scan advanced frontiers, found conflicts and computed swept bounds (arms: the broad phase
+   is in play). */
+TEST(ConflictDetector, ResetForgetsFrontiersConflictsAndSweptBounds)
+{
+    std::mt19937 rng(29);
+    const auto problem = scenarios::createPlanarCross(8);
+    const auto &si = *problem.getSpaceInformation();
+    ConflictDetector detector(si, 16);
+    const auto pairs = allPairs(detector);
+    int conflicting = 0;
+    for (int k = 0; k < 20; ++k)
+    {
+        const auto plan = armWalkPlan(problem, rng);
+        detector.reset();
+        for (std::size_t p = 0; p < detector.getPairCount(); ++p)
+            ASSERT_EQ(detector.getFrontier(detector.getPair(p).first, detector.getPair(p).second), 0u);
+        ConflictDetector fresh(si, 16);
+        const auto expected = fresh.findEarliest(plan);
+        EXPECT_EQ(detector.findEarliest(plan), expected);
+        conflicting += expected ? 1 : 0;
+        detector.scan(plan, pairs, 0, plan.getMakespan() + 1, false);  // the next plan starts from all of this
+    }
+    EXPECT_GT(conflicting, 5);
 }
 
 TEST(ConflictDetector, InvalidationDropsStaleSweptBounds)

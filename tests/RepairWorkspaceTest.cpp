@@ -1,5 +1,6 @@
 #include "TestProblems.h"
 
+#include "ompl_parc/arc/RepairLoop.h"
 #include "ompl_parc/arc/RepairWorkspace.h"
 #include "ompl_parc/planners/ARC.h"
 #include "ompl_parc/planners/PARC.h"
@@ -53,6 +54,15 @@ TEST(RepairWorkspace, ConfigureChangesTheWorkerCountAndRefusesZeros)
     EXPECT_THROW(workspace.configure(2, 0, 8, true), ompl::Exception);
     EXPECT_EQ(workspace.getPool().getWorkerCount(), 3u);  // a refused configuration changes nothing
     EXPECT_THROW(RepairWorkspace(*problem.getSpaceInformation(), 0), ompl::Exception);
+}
+
+TEST(RepairWorkspace, ALoopRefusesTheWorkspaceOfAnotherTeam)
+{
+    const auto problem = scenarios::createMobileCross(4), other = scenarios::createMobileCross(4);
+    RepairWorkspace workspace(*other.getSpaceInformation(), 1);
+    EXPECT_THROW(RepairLoop(problem, 1, workspace), ompl::Exception);
+    RepairWorkspace own(*problem.getSpaceInformation(), 1);
+    EXPECT_NO_THROW(RepairLoop(problem, 1, own));
 }
 
 /* The planner keeps its workspace across clear(): a query after another query gives the plan a fresh planner gives. */

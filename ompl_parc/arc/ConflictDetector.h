@@ -52,11 +52,14 @@ namespace ompl_parc
 
         /** \brief Change H (0 disables the broad phase); drops all swept bounds. Not during a scan. */
         void setSegmentLength(std::size_t segmentLength);
+        std::size_t getSegmentLength() const { return segmentLength_; }
 
         /** \brief Forget every plan scanned so far: every frontier back to timestep 0, no known conflict, no swept
             bounds. Keeps the memory (a new query on the same team faults in no fresh pages). Not during a scan. */
         void reset();
-        std::size_t getSegmentLength() const { return segmentLength_; }
+
+        /** \brief The team's space information (the detector's team). */
+        const MultiRobotSpaceInformation &getSpaceInformation() const { return si_; }
 
         /** \brief The earliest conflict of \e plan over all pairs, ties broken by (first, second); none if
             the plan is conflict-free. Advances the frontiers of the pairs it validates. */

@@ -45,8 +45,8 @@ ompl_parc::RepairLoop::RepairLoop(const MultiRobotProblem &problem, std::uint_fa
       planned_(problem.getSpaceInformation()->getRobotCount(), 0),
       workspace_(workspace)
 {
-    if (workspace.getDetector().getRobotCount() != problem.getRobotCount())
-        throw ompl::Exception("RepairLoop", "the workspace is for another team size");
+    if (&workspace.getDetector().getSpaceInformation() != problem.getSpaceInformation().get())
+        throw ompl::Exception("RepairLoop", "the workspace is for another team");
     workspace.reset();
 }
 
@@ -60,9 +60,9 @@ void ompl_parc::RepairLoop::configure(RepairLoopOptions options)
         throw ompl::Exception("RepairLoop", "the horizon must be at least 1 timestep");
     if (options.batchPerWorker == 0)
         throw ompl::Exception("RepairLoop", "a batch must hold at least one conflict per worker");
+    workspace_.configure(options.workers, options.horizon, options.batchPerWorker, options.optimistic);
     resolver_ =
         std::make_unique<ConflictResolver>(*problem_.getSpaceInformation(), options.settings, options.hierarchy);
-    workspace_.configure(options.workers, options.horizon, options.batchPerWorker, options.optimistic);
     options_ = std::move(options);
 }
 

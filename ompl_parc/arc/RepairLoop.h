@@ -57,7 +57,7 @@ namespace ompl_parc
       public:
         /** \brief An engine for \e problem seeded with \e seed, working in \e workspace (made for the same team;
             reset here). Both are kept by reference and must outlive the loop. Throws ompl::Exception if the
-            workspace is for another team size. */
+            workspace is for another team (another MultiRobotSpaceInformation). */
         RepairLoop(const MultiRobotProblem &problem, std::uint_fast32_t seed, RepairWorkspace &workspace);
         ~RepairLoop();
 

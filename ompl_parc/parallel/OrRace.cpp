@@ -74,7 +74,6 @@ void ompl_parc::OrRace::createRacers(const RacerAllocator &allocate, unsigned in
         ob::PlannerPtr racer = allocate(k, mixSeed(raceSeed, k));
         racer->setName(owner_.getName() + "#" + std::to_string(k));
         racer->setProblemDefinition(pdef);
-        racer->setup();  // a racer's own allocation (P-ARC's workspace) before the race, not in it
         racers_.push_back(std::move(racer));
     }
 }
