@@ -9,9 +9,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <new>
+#include <typeinfo>
 #include <string>
 
 namespace ob = ompl::base;
@@ -67,12 +69,15 @@ ompl_parc::CompositeStateSpace::CompositeStateSpace(const std::vector<ob::StateS
 
     singleBlock_ = true;
     std::size_t values = 0;
+    plainVectors_ = true;
     for (const auto &space : robotSpaces)
     {
         const auto *rv = dynamic_cast<const ob::RealVectorStateSpace *>(space.get());
         singleBlock_ = singleBlock_ && rv != nullptr;
+        plainVectors_ = plainVectors_ && typeid(*space) == typeid(ob::RealVectorStateSpace);
         valueStart_.push_back(values);
         values += space->getDimension();
+        dimensions_.push_back(space->getDimension());
     }
     stateOffset_ = align(sizeof(SharedStates *));
     componentsOffset_ = stateOffset_ + align(sizeof(StateType));
@@ -169,10 +174,28 @@ double ompl_parc::CompositeStateSpace::distance(const ob::State *state1, const o
 {
     const auto *s1 = state1->as<StateType>();
     const auto *s2 = state2->as<StateType>();
-    double d = 0.;
+    if (!plainVectors_)
+    {
+        double d = 0.;
+        for (unsigned int i = 0; i < componentCount_; ++i)
+            d = std::max(d, components_[i]->distance(s1->components[i], s2->components[i]));
+        return d;
+    }
+    // RealVectorStateSpace::distance's sums; the largest root is the root of the largest sum (sqrt is monotone).
+    double largest = 0.;
     for (unsigned int i = 0; i < componentCount_; ++i)
-        d = std::max(d, components_[i]->distance(s1->components[i], s2->components[i]));
-    return d;
+    {
+        const double *a = s1->as<ob::RealVectorStateSpace::StateType>(i)->values;
+        const double *b = s2->as<ob::RealVectorStateSpace::StateType>(i)->values;
+        double sum = 0.;
+        for (unsigned int k = 0; k < dimensions_[i]; ++k)
+        {
+            const double diff = a[k] - b[k];
+            sum += diff * diff;
+        }
+        largest = std::max(largest, sum);
+    }
+    return std::sqrt(largest);
 }
 
 double ompl_parc::CompositeStateSpace::getMaximumExtent() const

@@ -73,6 +73,11 @@ namespace ompl_parc
         bool singleBlock_{false};
         std::size_t stateOffset_{0}, componentsOffset_{0}, robotStatesOffset_{0}, valuesOffset_{0}, blockSize_{0};
         std::vector<std::size_t> valueStart_;
+        /** \brief Whether every robot space is exactly OMPL's RealVectorStateSpace (a subclass may measure otherwise),
+            and their dimensions: distance() then reads the values itself, one square root in all instead of a virtual
+            call and a root per robot (OMPL's path length, nearest neighbours of the coupled baselines). */
+        bool plainVectors_{false};
+        std::vector<unsigned int> dimensions_;
     };
 }  // namespace ompl_parc
 

@@ -41,6 +41,52 @@ TEST(CompositeStateSpace, DistanceIsTheLargestRobotDistance)
     EXPECT_DOUBLE_EQ(space->getMaximumExtent(), std::sqrt(2.) * 20.);
 }
 
+namespace
+{
+    /** A real vector space that measures otherwise (a user's subclass): the composite must ask it. */
+    class DoubledSpace : public ob::RealVectorStateSpace
+    {
+      public:
+        using ob::RealVectorStateSpace::RealVectorStateSpace;
+        double distance(const ob::State *a, const ob::State *b) const override
+        {
+            return 2. * ob::RealVectorStateSpace::distance(a, b);
+        }
+    };
+}  // namespace
+
+/* Robots of different dimensions, random states: the composite distance is the largest of the robots' own
+   distances (RealVectorStateSpace::distance, or a subclass's override), up to rounding. */
+TEST(CompositeStateSpace, DistanceMatchesTheRobotSpacesOwn)
+{
+    std::vector<ob::StateSpacePtr> team = spaces(3, 2, 10.);
+    const auto seven = spaces(2, 7, 3.);
+    team.insert(team.end(), seven.begin(), seven.end());
+    auto doubled = team;
+    doubled[1] = std::make_shared<DoubledSpace>(2);
+    doubled[1]->as<ob::RealVectorStateSpace>()->setBounds(-10., 10.);
+    for (const auto &robots : {team, doubled})
+    {
+        auto space = std::make_shared<CompositeStateSpace>(robots);
+        space->setup();
+        auto sampler = space->allocStateSampler();
+        ob::ScopedState<> a(space), b(space);
+        for (int k = 0; k < 200; ++k)
+        {
+            sampler->sampleUniform(a.get());
+            sampler->sampleUniform(b.get());
+            if (k % 4 == 0)  // robots 0..2 close: a 7-dimensional robot decides
+                for (unsigned int v = 0; v < 6; ++v)
+                    b[v] = a[v] + 1e-3 * v;
+            double expected = 0.;
+            for (unsigned int i = 0; i < robots.size(); ++i)
+                expected = std::max(expected, robots[i]->distance(a->as<ob::CompoundState>()->components[i],
+                                                                  b->as<ob::CompoundState>()->components[i]));
+            EXPECT_NEAR(space->distance(a.get(), b.get()), expected, 1e-12 * expected);
+        }
+    }
+}
+
 TEST(CompositeStateSpace, OneCompositeStepMovesNoRobotFurther)
 {
     auto space = std::make_shared<CompositeStateSpace>(spaces(4, 3, 5.));

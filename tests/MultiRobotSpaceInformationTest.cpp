@@ -1,5 +1,6 @@
 #include "TestProblems.h"
 
+#include "ompl_parc/collision/CapsuleCollision.h"
 #include "ompl_parc/robots/DiscRobot.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 #include "ompl_parc/validation/SolutionValidator.h"
@@ -9,6 +10,8 @@
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
 #include <ompl/util/Exception.h>
+
+#include <random>
 
 using namespace ompl_parc;
 namespace ob = ompl::base;
@@ -35,6 +38,52 @@ TEST(MultiRobotSpaceInformation, ValidityCheckerChecksRobotsAndPairs)
     EXPECT_EQ(si->explainInvalid(state.get()), "robot 'a' is in collision with the environment");
     set(-5, 0, 11, 0);
     EXPECT_EQ(si->explainInvalid(state.get()), "robot 'b' is out of bounds");
+}
+
+/* A crowd of 300 discs and planar arms at random places: explainInvalid() names the first colliding pair in (i, j)
+   order, as testing every pair does (its broad phase skips only pairs that cannot collide). */
+TEST(MultiRobotSpaceInformation, ExplainInvalidNamesTheFirstCollidingPairOfACrowd)
+{
+    std::mt19937 rng(7);
+    for (const char *scenario : {"mobile_circle", "planar_cross"})
+    {
+        const auto problem = scenarios::createScenario(scenario, scenario[0] == 'm' ? 300 : 32);
+        const auto &si = *problem.getSpaceInformation();
+        std::vector<CollisionBody> bodies(si.getRobotCount());
+        int collided = 0;
+        for (int k = 0; k < 30; ++k)
+        {
+            std::vector<std::vector<double>> configs;
+            for (std::size_t i = 0; i < si.getRobotCount(); ++i)
+            {
+                const auto &bounds = si.getRobot(i)->getBounds();
+                std::vector<double> q;
+                for (std::size_t d = 0; d < bounds.low.size(); ++d)  // a shrinking room: from sparse to crowded
+                {
+                    const double middle = 0.5 * (bounds.low[d] + bounds.high[d]),
+                                 half = 0.5 * (bounds.high[d] - bounds.low[d]) * (1. - k / 40.);
+                    q.push_back(std::uniform_real_distribution<double>(middle - half, middle + half)(rng));
+                }
+                configs.push_back(q);
+                si.getRobot(i)->computeBody(configs.back().data(), bodies[i]);
+            }
+            std::string expected;
+            for (std::size_t i = 0; i < bodies.size() && expected.empty(); ++i)
+                for (std::size_t j = i + 1; j < bodies.size() && expected.empty(); ++j)
+                    if (bodiesCollide(bodies[i], bodies[j]))
+                        expected = "robots '" + si.getRobot(i)->getName() + "' and '" + si.getRobot(j)->getName() +
+                                   "' collide";
+            std::vector<const double *> values;
+            for (const auto &q : configs)
+                values.push_back(q.data());
+            const std::string got = si.explainInvalid(values);
+            if (got.rfind("robot '", 0) == 0)
+                continue;  // a robot alone is invalid (bounds, obstacles): it is reported before any pair
+            EXPECT_EQ(got, expected) << scenario << " round " << k;
+            collided += expected.empty() ? 0 : 1;
+        }
+        EXPECT_GE(collided, 3) << scenario;  // random arms are often invalid alone (self-collision)
+    }
 }
 
 TEST(MultiRobotSpaceInformation, MotionsAreCheckedOncePerTimestep)

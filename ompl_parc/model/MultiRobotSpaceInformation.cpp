@@ -1,5 +1,6 @@
 #include "ompl_parc/model/MultiRobotSpaceInformation.h"
 
+#include "ompl_parc/collision/BoundingBox.h"
 #include "ompl_parc/collision/CapsuleCollision.h"
 #include "ompl_parc/model/MultiRobotValidityChecker.h"
 #include "ompl_parc/robots/RakeMotionValidator.h"
@@ -10,6 +11,9 @@
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
+#include <numeric>
+#include <optional>
+#include <utility>
 #include <set>
 #include <sstream>
 
@@ -17,6 +21,33 @@ namespace ob = ompl::base;
 
 namespace
 {
+    /** The first pair (i, j), i < j, in (i, j) order whose bodies collide, if any. A sweep along x over the bodies'
+        boxes picks the pairs to test: a team's start check tested every pair (523 776 at 1024 robots, 5 ms), and
+        apart from a crowd few boxes overlap. */
+    std::optional<std::pair<std::size_t, std::size_t>> firstCollidingPair(
+        const std::vector<ompl_parc::CollisionBody> &bodies)
+    {
+        constexpr double MARGIN = 1e-9;  // as the conflict detector's: rounding never hides a collision
+        const std::size_t n = bodies.size();
+        std::vector<ompl_parc::BoundingBox> boxes(n);
+        for (std::size_t i = 0; i < n; ++i)
+            boxes[i].add(bodies[i]);  // never NaN (see BoundingBox): the order below is a strict weak one
+        std::vector<std::size_t> order(n);
+        std::iota(order.begin(), order.end(), std::size_t{0});
+        std::sort(order.begin(), order.end(),
+                  [&](std::size_t a, std::size_t b) { return boxes[a].lo[0] < boxes[b].lo[0]; });
+        std::optional<std::pair<std::size_t, std::size_t>> first;
+        for (std::size_t a = 0; a < n; ++a)
+            for (std::size_t b = a + 1; b < n && boxes[order[b]].lo[0] <= boxes[order[a]].hi[0] + MARGIN; ++b)
+            {
+                const std::pair<std::size_t, std::size_t> pair = std::minmax(order[a], order[b]);
+                if ((!first || pair < *first) && boxes[pair.first].overlaps(boxes[pair.second], MARGIN) &&
+                    ompl_parc::bodiesCollide(bodies[pair.first], bodies[pair.second]))
+                    first = pair;
+            }
+        return first;
+    }
+
     void checkTeam(const std::vector<ompl_parc::RobotPtr> &robots)
     {
         if (robots.empty())
@@ -134,10 +165,8 @@ std::string ompl_parc::MultiRobotSpaceInformation::explainInvalid(const std::vec
     std::vector<CollisionBody> bodies(robots_.size());
     for (std::size_t i = 0; i < robots_.size(); ++i)
         robots_[i]->computeBody(configs[i], bodies[i]);
-    for (std::size_t i = 0; i < robots_.size(); ++i)
-        for (std::size_t j = i + 1; j < robots_.size(); ++j)
-            if (bodiesCollide(bodies[i], bodies[j]))
-                return two + robots_[i]->getName() + "' and '" + robots_[j]->getName() + "' collide";
+    if (const auto pair = firstCollidingPair(bodies))
+        return two + robots_[pair->first]->getName() + "' and '" + robots_[pair->second]->getName() + "' collide";
     return "";
 }
 
