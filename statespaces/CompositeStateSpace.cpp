@@ -13,8 +13,8 @@
 #include <cstddef>
 #include <limits>
 #include <new>
-#include <typeinfo>
 #include <string>
+#include <typeinfo>
 
 namespace ob = ompl::base;
 
@@ -74,7 +74,8 @@ ompl_parc::CompositeStateSpace::CompositeStateSpace(const std::vector<ob::StateS
     {
         const auto *rv = dynamic_cast<const ob::RealVectorStateSpace *>(space.get());
         singleBlock_ = singleBlock_ && rv != nullptr;
-        plainVectors_ = plainVectors_ && typeid(*space) == typeid(ob::RealVectorStateSpace);
+        const ob::StateSpace &robot = *space;
+        plainVectors_ = plainVectors_ && typeid(robot) == typeid(ob::RealVectorStateSpace);
         valueStart_.push_back(values);
         values += space->getDimension();
         dimensions_.push_back(space->getDimension());

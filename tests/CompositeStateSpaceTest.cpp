@@ -6,6 +6,7 @@
 #include <ompl/base/spaces/SO2StateSpace.h>
 #include <ompl/util/Exception.h>
 
+#include <cmath>
 #include <thread>
 #include <vector>
 
@@ -85,6 +86,17 @@ TEST(CompositeStateSpace, DistanceMatchesTheRobotSpacesOwn)
             EXPECT_NEAR(space->distance(a.get(), b.get()), expected, 1e-12 * expected);
         }
     }
+    // As the robot spaces' largest distance (std::max): a NaN robot distance is passed over, an infinite one wins.
+    auto space = std::make_shared<CompositeStateSpace>(team);
+    space->setup();
+    ob::ScopedState<> a(space), b(space);
+    for (unsigned int v = 0; v < space->getDimension(); ++v)
+        a[v] = b[v] = 0.;
+    b[0] = std::nan("");
+    b[2] = 2.;
+    EXPECT_EQ(space->distance(a.get(), b.get()), 2.);
+    b[8] = HUGE_VAL;
+    EXPECT_EQ(space->distance(a.get(), b.get()), HUGE_VAL);
 }
 
 TEST(CompositeStateSpace, OneCompositeStepMovesNoRobotFurther)

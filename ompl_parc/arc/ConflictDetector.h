@@ -58,7 +58,7 @@ namespace ompl_parc
             bounds. Keeps the memory (a new query on the same team faults in no fresh pages). Not during a scan. */
         void reset();
 
-        /** \brief The team's space information (the detector's team). */
+        /** \brief The team this detector is for (a RepairLoop checks that its problem's team is the same). */
         const MultiRobotSpaceInformation &getSpaceInformation() const { return si_; }
 
         /** \brief The earliest conflict of \e plan over all pairs, ties broken by (first, second); none if

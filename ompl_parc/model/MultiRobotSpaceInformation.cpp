@@ -11,37 +11,71 @@
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <optional>
-#include <utility>
 #include <set>
 #include <sstream>
+#include <utility>
 
 namespace ob = ompl::base;
 
 namespace
 {
-    /** The first pair (i, j), i < j, in (i, j) order whose bodies collide, if any. A sweep along x over the bodies'
-        boxes picks the pairs to test: a team's start check tested every pair (523 776 at 1024 robots, 5 ms), and
-        apart from a crowd few boxes overlap. */
+    /** The axis along which the lower ends of \e boxes spread furthest (the sweep's: teams stand in rows or columns).
+     */
+    int widestAxis(const std::vector<ompl_parc::BoundingBox> &boxes)
+    {
+        int widest = 0;
+        double spread = -1.;
+        for (int d = 0; d < 3; ++d)
+        {
+            double low = HUGE_VAL, high = -HUGE_VAL;
+            for (const auto &box : boxes)
+                if (std::isfinite(box.lo[d]))
+                {
+                    low = std::min(low, box.lo[d]);
+                    high = std::max(high, box.lo[d]);
+                }
+            if (high - low > spread)
+            {
+                widest = d;
+                spread = high - low;
+            }
+        }
+        return widest;
+    }
+
+    /** The first pair (i, j), i < j, in (i, j) order whose bodies collide, if any. A sweep over the bodies' boxes
+        picks the pairs to test: a team's start check tested every pair (523 776 at 1024 robots, 5 ms), and apart from
+        a crowd few boxes overlap. */
     std::optional<std::pair<std::size_t, std::size_t>> firstCollidingPair(
         const std::vector<ompl_parc::CollisionBody> &bodies)
     {
-        constexpr double MARGIN = 1e-9;  // as the conflict detector's: rounding never hides a collision
         const std::size_t n = bodies.size();
         std::vector<ompl_parc::BoundingBox> boxes(n);
+        double extent = 0.;
         for (std::size_t i = 0; i < n; ++i)
+        {
             boxes[i].add(bodies[i]);  // never NaN (see BoundingBox): the order below is a strict weak one
+            for (int d = 0; d < 3; ++d)
+                for (double v : {boxes[i].lo[d], boxes[i].hi[d]})
+                    if (std::isfinite(v))
+                        extent = std::max(extent, std::fabs(v));
+        }
+        // Relative to the coordinates, as DiscPairScan's: rounding in the boxes never hides a touching pair.
+        const double margin = 1e-9 * (1. + extent);
+        const int axis = widestAxis(boxes);
         std::vector<std::size_t> order(n);
         std::iota(order.begin(), order.end(), std::size_t{0});
         std::sort(order.begin(), order.end(),
-                  [&](std::size_t a, std::size_t b) { return boxes[a].lo[0] < boxes[b].lo[0]; });
+                  [&](std::size_t a, std::size_t b) { return boxes[a].lo[axis] < boxes[b].lo[axis]; });
         std::optional<std::pair<std::size_t, std::size_t>> first;
         for (std::size_t a = 0; a < n; ++a)
-            for (std::size_t b = a + 1; b < n && boxes[order[b]].lo[0] <= boxes[order[a]].hi[0] + MARGIN; ++b)
+            for (std::size_t b = a + 1; b < n && boxes[order[b]].lo[axis] <= boxes[order[a]].hi[axis] + margin; ++b)
             {
                 const std::pair<std::size_t, std::size_t> pair = std::minmax(order[a], order[b]);
-                if ((!first || pair < *first) && boxes[pair.first].overlaps(boxes[pair.second], MARGIN) &&
+                if ((!first || pair < *first) && boxes[pair.first].overlaps(boxes[pair.second], margin) &&
                     ompl_parc::bodiesCollide(bodies[pair.first], bodies[pair.second]))
                     first = pair;
             }
