@@ -22,8 +22,7 @@ namespace ob = ompl::base;
 
 namespace
 {
-    /** The axis along which the lower ends of \e boxes spread furthest (the sweep's: teams stand in rows or columns).
-     */
+    /** The axis along which the lower ends of \e boxes spread furthest (teams often stand in rows or columns). */
     int widestAxis(const std::vector<ompl_parc::BoundingBox> &boxes)
     {
         int widest = 0;
