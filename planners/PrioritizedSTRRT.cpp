@@ -10,6 +10,7 @@
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
@@ -24,6 +25,9 @@ ompl_parc::PrioritizedSTRRT::PrioritizedSTRRT(const ob::SpaceInformationPtr &si)
     declareParam<unsigned int>("seed", this, &PrioritizedSTRRT::setSeed, &PrioritizedSTRRT::getSeed);
     declareParam<bool>("promote", this, &PrioritizedSTRRT::setPromote, &PrioritizedSTRRT::getPromote, "0,1");
     declareParam<bool>("unblock", this, &PrioritizedSTRRT::setUnblock, &PrioritizedSTRRT::getUnblock, "0,1");
+    declareParam<bool>("lattice", this, &PrioritizedSTRRT::setLattice, &PrioritizedSTRRT::getLattice, "0,1");
+    declareParam<double>("lattice_step", this, &PrioritizedSTRRT::setLatticeStep, &PrioritizedSTRRT::getLatticeStep,
+                         "0.:0.01:1000.");
     declareParam<unsigned int>("sample_cap", this, &PrioritizedSTRRT::setSampleCap, &PrioritizedSTRRT::getSampleCap,
                                "0:1000:100000000");
     smoothing_.declareParameter(*this);
@@ -48,6 +52,13 @@ void ompl_parc::PrioritizedSTRRT::setPriorityOrder(const std::string &order)
     if (order != "given" && order != "shuffled")
         throw ompl::Exception(getName(), "priority order must be 'given' or 'shuffled', not '" + order + "'");
     settings_.shuffle = order == "shuffled";
+}
+
+void ompl_parc::PrioritizedSTRRT::setLatticeStep(double step)
+{
+    if (!(step >= 0.) || !std::isfinite(step))
+        throw ompl::Exception(getName(), "lattice_step must be 0 (automatic) or positive and finite");
+    settings_.latticeStep = step;
 }
 
 void ompl_parc::PrioritizedSTRRT::setRewiring(const std::string &rewiring)
@@ -125,7 +136,11 @@ ob::PlannerStatus ompl_parc::PrioritizedSTRRT::solve(const ob::PlannerTerminatio
     const InnerPlannerLog::Session session;
     {
         const InnerPlannerLog::Scope inner;
-        const PrioritizedSTRRTSolver solver(settings_);
+        // Rounds after the first shuffle the base order (which breaks the blocking order's ties and cycles):
+        // the lattice plans an order the same way every time, so only another order can change the outcome.
+        auto reshuffled = settings_;
+        reshuffled.shuffle = true;
+        const PrioritizedSTRRTSolver first(settings_), later(reshuffled);
         solved_ = false;
         // Round r: each robot's ST-RRT capped at sample_cap x 2^r iterations (no cap and one round for 0); a round
         // that failed for good (nothing another draw could change) ends them.
@@ -133,8 +148,8 @@ ob::PlannerStatus ompl_parc::PrioritizedSTRRT::solve(const ob::PlannerTerminatio
         for (rounds_ = 0; !solved_ && !ptc && retry && (sampleCap_ > 0 || rounds_ == 0);)
         {
             whole.sampleCap = Subproblem::doubledCap(sampleCap_, rounds_);
-            solved_ =
-                solver.solve(*mrsi_, whole, ptc, rounds_ == 0 ? lastSeed_ : mixSeed(lastSeed_, rounds_), patch, retry);
+            solved_ = rounds_ == 0 ? first.solve(*mrsi_, whole, ptc, lastSeed_, patch, retry)
+                                   : later.solve(*mrsi_, whole, ptc, mixSeed(lastSeed_, rounds_), patch, retry);
             ++rounds_;
         }
     }

@@ -26,7 +26,8 @@ namespace ompl_parc
 
         /** \brief INVALID_START / INVALID_GOAL (logging which robot is invalid), EXACT_SOLUTION, or TIMEOUT.
             Plans in rounds until the termination condition: round r caps each robot's ST-RRT at sample_cap x 2^r
-            iterations and draws fresh samples, and within a round a robot that fails is promoted to the front
+            iterations and draws fresh samples (after the first, with a shuffled base order: the lattice plans an
+            order the same way every time), and within a round a robot that fails is promoted to the front
             (promote). With sample_cap 0 there is one uncapped round, which may fail before the condition. */
         using ompl::base::Planner::solve;  // keep solve(seconds) visible next to the override
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
@@ -51,6 +52,14 @@ namespace ompl_parc
             (BlockingOrder; default on); the given or shuffled order breaks ties. */
         void setUnblock(bool unblock) { settings_.unblock = unblock; }
         bool getUnblock() const { return settings_.unblock; }
+        /** \brief Plan each translating robot on a space-time lattice first (LatticeSearch; default on), ST-RRT
+            only where the lattice has no path. */
+        void setLattice(bool lattice) { settings_.lattice = lattice; }
+        bool getLattice() const { return settings_.lattice; }
+        /** \brief The lattice's step; 0 (default): half the robot's bounding radius. Throws for a negative or
+            non-finite step. */
+        void setLatticeStep(double step);
+        double getLatticeStep() const { return settings_.latticeStep; }
         /** \brief ST-RRT iterations per robot in the first round (doubling each round); 0: no cap, one round. */
         void setSampleCap(unsigned int cap) { sampleCap_ = cap; }
         unsigned int getSampleCap() const { return sampleCap_; }

@@ -250,6 +250,7 @@ TEST(PrioritizedSTRRT, PlansInRoundsUntilTheStop)
         planner.params().setParam("promote", promote);
         planner.params().setParam("unblock", "0");  // the given order, which walls b in
         planner.params().setParam("sample_cap", cap);
+        planner.params().setParam("lattice", "0");  // the rounds of ST-RRT's cap are tested
         planner.params().setParam("seed", "5");
         const auto pdef = problem.createProblemDefinition();
         planner.setProblemDefinition(pdef);

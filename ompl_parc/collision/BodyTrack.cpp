@@ -26,6 +26,22 @@ void ompl_parc::BodyTrack::append(const CollisionBody &body)
     centerZ_.push_back(body.centerZ_);
     boundRadius_.push_back(body.boundRadius_);
     spheresOnly_.push_back(body.spheresOnly_ ? 1 : 0);
+    const double lo[3] = {body.centerX_ - body.boundRadius_, body.centerY_ - body.boundRadius_,
+                          body.centerZ_ - body.boundRadius_};
+    const double hi[3] = {body.centerX_ + body.boundRadius_, body.centerY_ + body.boundRadius_,
+                          body.centerZ_ + body.boundRadius_};
+    if ((size() - 1) % BLOCK == 0)
+    {
+        blockBoxes_.insert(blockBoxes_.end(), lo, lo + 3);
+        blockBoxes_.insert(blockBoxes_.end(), hi, hi + 3);
+        return;
+    }
+    double *box = blockBoxes_.data() + blockBoxes_.size() - 6;
+    for (int d = 0; d < 3; ++d)
+    {
+        box[d] = std::min(box[d], lo[d]);
+        box[3 + d] = std::max(box[3 + d], hi[d]);
+    }
 }
 
 void ompl_parc::BodyTrack::load(std::size_t t, CollisionBody &out) const
@@ -60,6 +76,7 @@ void ompl_parc::BodyTrack::reserve(std::size_t timesteps, std::size_t capsules)
     values_.reserve(timesteps * capsules * ARRAYS);
     offsets_.reserve(timesteps + 1);
     spheresOnly_.reserve(timesteps);
+    blockBoxes_.reserve(6 * (timesteps / BLOCK + 1));
     for (auto *v : {&centerX_, &centerY_, &centerZ_, &boundRadius_})
         v->reserve(timesteps);
 }

@@ -3,6 +3,7 @@
 
 #include "ompl_parc/collision/CollisionBody.h"
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -29,6 +30,18 @@ namespace ompl_parc
             only when the two bounding spheres overlap, which is bodiesCollide()'s first test: most pairs stop there. */
         bool collides(std::size_t t, const CollisionBody &body, CollisionBody &scratch) const;
 
+        /** \brief Timesteps per block of blockMayTouch(). */
+        static constexpr std::size_t BLOCK = 32;
+
+        /** \brief False if no body of block \e block (timesteps BLOCK x block onwards, < size()) can touch the box
+            [\e lo, \e hi]: the box around their bounding spheres misses it. A body that moves along a straight
+            piece is near another robot's track at few of its timesteps; this skips the others BLOCK at a time. */
+        bool blockMayTouch(std::size_t block, const std::array<double, 3> &lo, const std::array<double, 3> &hi) const
+        {
+            const double *b = blockBoxes_.data() + 6 * block;
+            return lo[0] <= b[3] && b[0] <= hi[0] && lo[1] <= b[4] && b[1] <= hi[1] && lo[2] <= b[5] && b[2] <= hi[2];
+        }
+
         /** \brief Room for \e timesteps bodies of \e capsules capsules each. */
         void reserve(std::size_t timesteps, std::size_t capsules);
 
@@ -43,6 +56,8 @@ namespace ompl_parc
         /** \brief Where body t starts in values_ (one more entry than bodies). */
         std::vector<std::size_t> offsets_{0};
         std::vector<unsigned char> spheresOnly_;
+        /** \brief Per block of BLOCK timesteps: the box (low x, y, z, high x, y, z) around its bounding spheres. */
+        std::vector<double> blockBoxes_;
     };
 }  // namespace ompl_parc
 

@@ -9,6 +9,8 @@
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 ompl_parc::DynamicObstacles::DynamicObstacles(RobotPtr robot, double resolution)
     : robot_(std::move(robot)), resolution_(resolution)
@@ -52,6 +54,7 @@ void ompl_parc::DynamicObstacles::addTrack(std::shared_ptr<const BodyTrack> trac
 {
     if (!track || track->size() == 0)
         throw ompl::Exception("DynamicObstacles", "an obstacle needs a track of at least one body");
+    lastMove_ = std::max(lastMove_, track->size() - 1);
     tracks_.push_back(std::move(track));
 }
 
@@ -64,6 +67,79 @@ bool ompl_parc::DynamicObstacles::isClear(const double *q, std::size_t timestep)
     return std::none_of(tracks_.begin(), tracks_.end(),
                         [&](const auto &track)
                         { return track->collides(std::min(timestep, track->size() - 1), body, other); });
+}
+
+bool ompl_parc::DynamicObstacles::isMotionClear(const double *from, const double *to, std::size_t first,
+                                                std::size_t steps) const
+{
+    const unsigned int d = robot_->getDimension();
+    thread_local std::vector<double> q, lo, hi;
+    q.resize(d);
+    if (steps == 0)
+        return true;
+    std::array<double, 3> boxLo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, boxHi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    lo.assign(from, from + d);
+    hi.assign(from, from + d);
+    for (unsigned int i = 0; i < d; ++i)
+    {
+        lo[i] = std::min(lo[i], to[i]);
+        hi[i] = std::max(hi[i], to[i]);
+    }
+    const auto swept = robot_->sweepValid(from, to);
+    if (swept && !*swept)
+        return false;
+    if (!robot_->expandBoxOver(lo.data(), hi.data(), boxLo, boxHi))
+    {
+        for (std::size_t s = 1; s <= steps; ++s)
+        {
+            TimedPath::interpolate(from, to, s, steps, d, q.data());
+            if (!isClear(q.data(), first + s))
+                return false;
+        }
+        return true;
+    }
+    if (!swept)
+        for (std::size_t s = 1; s <= steps; ++s)
+        {
+            TimedPath::interpolate(from, to, s, steps, d, q.data());
+            if (!robot_->isValid(q.data()))
+                return false;
+        }
+    // Bodies along the motion, computed when an obstacle's block first needs them (most motions need none).
+    thread_local std::vector<CollisionBody> bodies;
+    thread_local std::vector<unsigned char> computed;
+    thread_local CollisionBody scratch;
+    if (bodies.size() < steps + 1)
+        bodies.resize(steps + 1);
+    computed.assign(steps + 1, 0);
+    const auto bodyAt = [&](std::size_t s) -> const CollisionBody &
+    {
+        if (computed[s] == 0)
+        {
+            TimedPath::interpolate(from, to, s, steps, d, q.data());
+            robot_->computeBody(q.data(), bodies[s]);
+            computed[s] = 1;
+        }
+        return bodies[s];
+    };
+    for (const auto &track : tracks_)
+    {
+        const std::size_t end = track->size() - 1;
+        // Timesteps first+1 .. first+steps; past the obstacle's end it holds its last body (in the last block).
+        for (std::size_t s = 1; s <= steps;)
+        {
+            const std::size_t t = std::min(first + s, end), block = t / BodyTrack::BLOCK;
+            // The local steps that fall in this block (all the remaining ones once past the end).
+            const std::size_t blockEnd =
+                (t == end) ? steps : std::min(steps, (block + 1) * BodyTrack::BLOCK - first - 1);
+            if (track->blockMayTouch(block, boxLo, boxHi))
+                for (std::size_t k = s; k <= blockEnd; ++k)
+                    if (track->collides(std::min(first + k, end), bodyAt(k), scratch))
+                        return false;
+            s = blockEnd + 1;
+        }
+    }
+    return true;
 }
 
 std::optional<std::size_t> ompl_parc::DynamicObstacles::earliestHold(const double *q) const

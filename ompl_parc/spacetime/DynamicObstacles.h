@@ -54,6 +54,16 @@ namespace ompl_parc
             at timestep \e timestep. */
         bool isClear(const double *q, std::size_t timestep) const;
 
+        /** \brief True if the robot is clear (isClear()) at every timestep \e first + s, s = 1..\e steps, moving
+            straight from \e from to \e to as a timed path lays it (TimedPath::interpolate(from, to, s, steps)).
+            The same answer as isClear() at each of those timesteps, or stricter where the robot can sweep the
+            motion at once (Robot::sweepValid); faster for robots with a box over configurations
+            (Robot::expandBoxOver): an obstacle is checked only in blocks of timesteps whose box meets the motion's. */
+        bool isMotionClear(const double *from, const double *to, std::size_t first, std::size_t steps) const;
+
+        /** \brief The last timestep at which an obstacle still moves (0 if none): from then on nothing changes. */
+        std::size_t getLastMove() const { return lastMove_; }
+
         /** \brief The earliest timestep from which the robot can stay at \e q forever untouched; none if
             \e q is invalid or a robot that has arrived blocks it for good. */
         std::optional<std::size_t> earliestHold(const double *q) const;
@@ -63,6 +73,7 @@ namespace ompl_parc
         double resolution_;
         /** \brief tracks_[o]: obstacle o's bodies at timesteps 0..arrival; its last body is held afterwards. */
         std::vector<std::shared_ptr<const BodyTrack>> tracks_;
+        std::size_t lastMove_{0};
     };
 
     using DynamicObstaclesPtr = std::shared_ptr<const DynamicObstacles>;

@@ -2,6 +2,7 @@
 
 #include "ompl_parc/planners/STRRTstar.h"
 #include "ompl_parc/planners/subproblem/BlockingOrder.h"
+#include "ompl_parc/spacetime/LatticeSearch.h"
 #include "ompl_parc/spacetime/SpaceTimeMotionValidator.h"
 #include "ompl_parc/spacetime/SpaceTimeStateSpace.h"
 #include "ompl_parc/statespaces/SpaceRegistryLock.h"
@@ -71,14 +72,25 @@ std::vector<std::size_t> ompl_parc::PrioritizedSTRRTSolver::priorityOrder(std::s
 }
 
 ompl_parc::TimedPath ompl_parc::PrioritizedSTRRTSolver::planRobot(const ob::StateSpacePtr &space,
-                                                                 const DynamicObstaclesPtr &obstacles,
-                                                                 const std::vector<double> &start,
-                                                                 const std::vector<double> &goal, std::size_t hold,
-                                                                 const ob::PlannerTerminationCondition &ptc,
-                                                                 std::uint_fast32_t seed) const
+                                                                  const DynamicObstaclesPtr &obstacles,
+                                                                  const std::vector<double> &start,
+                                                                  const std::vector<double> &goal, std::size_t hold,
+                                                                  const ob::PlannerTerminationCondition &ptc,
+                                                                  std::uint_fast32_t seed, bool lattice) const
 {
     if (hold == 0 && start == goal)
         return TimedPath(static_cast<unsigned int>(start.size()), start.data());  // already there, and safe to stay
+    const auto *vectors = dynamic_cast<const ob::RealVectorStateSpace *>(space.get());
+    if (lattice && vectors != nullptr && LatticeSearch::applies(*obstacles->getRobot()))
+    {
+        const auto &bounds = vectors->getBounds();
+        LatticeSearch search(obstacles, bounds.low, bounds.high,
+                             settings_.latticeStep > 0. ? settings_.latticeStep
+                                                        : LatticeSearch::defaultStep(*obstacles->getRobot(), start));
+        TimedPath path = search.plan(start, goal, hold, ptc);
+        if (!path.empty() || ptc)
+            return path;
+    }
     const auto si = createSpaceTimeSpaceInformation(space, obstacles);
 
     auto pdef = std::make_shared<ob::ProblemDefinition>(si);
@@ -107,7 +119,8 @@ std::vector<std::size_t> ompl_parc::PrioritizedSTRRTSolver::unblockedOrder(
             return order;  // after the stop nobody is planned: the order no longer matters
         alone[k] = planRobot(local.getCompositeSpace()->getRobotSpace(k),
                              std::make_shared<DynamicObstacles>(team[k], si.getResolution()), subproblem.starts[k],
-                             subproblem.goals[k], 0, subproblem.cappedTermination(ptc), mixSeed(seed, 0xa10e + k));
+                             subproblem.goals[k], 0, subproblem.cappedTermination(ptc), mixSeed(seed, 0xa10e + k),
+                             settings_.lattice);
     }
     return BlockingOrder(team, alone, subproblem.starts, subproblem.goals, ptc).order(order);
 }
@@ -115,7 +128,7 @@ std::vector<std::size_t> ompl_parc::PrioritizedSTRRTSolver::unblockedOrder(
 std::optional<std::size_t> ompl_parc::PrioritizedSTRRTSolver::planInOrder(
     const MultiRobotSpaceInformation &si, const Subproblem &subproblem, const MultiRobotSpaceInformation &local,
     const std::vector<std::size_t> &order, const Tracks &context, const ob::PlannerTerminationCondition &ptc,
-    std::uint_fast32_t seed, std::vector<TimedPath> &paths, bool &hopeless) const
+    std::uint_fast32_t seed, bool lattice, std::vector<TimedPath> &paths, bool &hopeless) const
 {
     const auto &team = local.getRobots();
     hopeless = true;
@@ -139,8 +152,9 @@ std::optional<std::size_t> ompl_parc::PrioritizedSTRRTSolver::planInOrder(
             return k;
         }
         // The sample cap bounds each robot's ST-RRT iterations.
-        paths[k] = planRobot(local.getCompositeSpace()->getRobotSpace(k), obstacles, subproblem.starts[k],
-                             subproblem.goals[k], *hold, subproblem.cappedTermination(ptc), mixSeed(seed, 0x57aa + k));
+        paths[k] =
+            planRobot(local.getCompositeSpace()->getRobotSpace(k), obstacles, subproblem.starts[k], subproblem.goals[k],
+                      *hold, subproblem.cappedTermination(ptc), mixSeed(seed, 0x57aa + k), lattice);
         if (paths[k].empty())
         {
             hopeless = static_cast<bool>(ptc);
@@ -193,8 +207,11 @@ bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &
     for (std::size_t attempt = 0;; ++attempt)
     {
         bool hopeless = false;
+        // Orders alternate between the lattice and ST-RRT alone: the lattice's paths (waits where the others
+        // let a robot get furthest) can wall in robots that ST-RRT's would not, and the other way round.
+        const bool lattice = settings_.lattice && attempt % 2 == 0;
         const auto failed = planInOrder(si, subproblem, *local, order, context, ptc,
-                                        attempt == 0 ? seed : mixSeed(seed, 0x9e0 + attempt), paths, hopeless);
+                                        attempt == 0 ? seed : mixSeed(seed, 0x9e0 + attempt), lattice, paths, hopeless);
         if (!failed)
             break;
         retry = !hopeless;

@@ -31,6 +31,14 @@ namespace ompl_parc
         /** \brief Refine the priority order from each robot's path planned alone (BlockingOrder): a robot whose
             start lies on another's way goes before it, one whose goal lies on another's way after it. */
         bool unblock{true};
+        /** \brief Plan each translating robot (LatticeSearch::applies) by space-time A* on a lattice first, and by
+            ST-RRT only if the lattice has no path: the lattice finds the waits and timings of a robot planned
+            late among many (a door, a crossing) that sampling seldom draws. The orders a solve tries alternate
+            between this and ST-RRT alone (the first uses the lattice): a lattice path that waits where the others
+            let the robot get furthest can wall in a later robot that ST-RRT's path would not. */
+        bool lattice{true};
+        /** \brief The lattice step; 0: LatticeSearch::defaultStep (the robot's bounding radius). */
+        double latticeStep{0.};
         /** \brief "off", "radius" or "knearest". */
         std::string rewiring{"off"};
         unsigned int batchSize{4096};
@@ -94,14 +102,16 @@ namespace ompl_parc
                                                const MultiRobotSpaceInformation &local,
                                                const std::vector<std::size_t> &order, const Tracks &context,
                                                const ompl::base::PlannerTerminationCondition &ptc,
-                                               std::uint_fast32_t seed, std::vector<TimedPath> &paths,
+                                               std::uint_fast32_t seed, bool lattice, std::vector<TimedPath> &paths,
                                                bool &hopeless) const;
 
         /** \brief One robot's timestep path from \e start to \e goal among \e obstacles, arriving no earlier
-            than timestep \e hold, sampling in \e space; empty on failure. */
+            than timestep \e hold, in \e space: on the lattice first if \e lattice is set and the robot translates,
+            else (or if the lattice has no path) by ST-RRT; empty on failure. */
         TimedPath planRobot(const ompl::base::StateSpacePtr &space, const DynamicObstaclesPtr &obstacles,
                             const std::vector<double> &start, const std::vector<double> &goal, std::size_t hold,
-                            const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed) const;
+                            const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed,
+                            bool lattice) const;
 
         PrioritizedSTRRTSettings settings_;
     };
