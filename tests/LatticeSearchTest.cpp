@@ -163,6 +163,10 @@ TEST(LatticeSearch, BadSettingsAreRefused)
     EXPECT_THROW(LatticeSearch(obstacles, {-1.}, {1.}, 0.25), ompl::Exception);
     EXPECT_THROW(LatticeSearch(nullptr, {-1., -1.}, {1., 1.}, 0.25), ompl::Exception);
     auto search = searchIn(obstacles);
+    // Bounds too wide for the lattice's coordinates: no path (the caller falls back to ST-RRT), no crash.
+    LatticeSearch wide(obstacles, {-1e300, -1e300}, {1e300, 1e300}, 0.25);
+    EXPECT_TRUE(
+        wide.plan(problem.getStart(0), problem.getGoal(0), 0, ompl::base::plannerNonTerminatingCondition()).empty());
     EXPECT_THROW(search.setHeuristicWeight(0.5), ompl::Exception);
     EXPECT_THROW(search.setHeuristicWeight(std::numeric_limits<double>::infinity()), ompl::Exception);
     EXPECT_TRUE(LatticeSearch::applies(*problem.getSpaceInformation()->getRobot(0)));

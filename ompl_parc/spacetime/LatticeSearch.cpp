@@ -74,8 +74,8 @@ namespace
 
     /** Timesteps from each lattice point to the goal with the moving obstacles left out (Dijkstra from the goal
         over the lattice's static motions): the search's heuristic, exact where no robot is in the way, and a
-        point without one cannot reach the goal at all. Beyond MAX_POINTS lattice points in the bounds, the
-        lattice distance instead (no obstacles). */
+        point without one cannot reach the goal at all. Beyond MAX_POINTS lattice points in the bounds (a wide
+        open field), the lattice distance instead, as if there were no static obstacles. */
     class StaticDistances
     {
       public:
@@ -175,8 +175,9 @@ namespace
             return distances_[index];
         }
 
-        /** The most lattice points given a distance (2^21: 16 MB). */
-        static constexpr std::size_t MAX_POINTS = std::size_t{1} << 21;
+        /** The most lattice points given a distance (2^15): the Dijkstra costs about as much per point as an
+            expansion of the search, which in open space needs only a few per lattice step of the way. */
+        static constexpr std::size_t MAX_POINTS = std::size_t{1} << 15;
 
       private:
         unsigned int dimension_;
@@ -255,6 +256,9 @@ ompl_parc::TimedPath ompl_parc::LatticeSearch::plan(const std::vector<double> &s
     }
     if (move > MAX_MOVE)
         return TimedPath();  // a resolution far above the usual: the motions would hold too many timesteps
+    for (unsigned int i = 0; i < d; ++i)
+        if (!((high_[i] - low_[i]) / step_ < MAX_STEPS) || !(std::abs(goal[i] - start[i]) / step_ < MAX_STEPS))
+            return TimedPath();  // bounds or a way too long in lattice steps for the lattice's coordinates
     const double finishRadius = step_ * std::sqrt(static_cast<double>(d)) * (1. + 1e-9);
     const StaticDistances toGoal(robot, low_, high_, step_, start, goal, move, finishRadius, resolution);
     if (toGoal.at(Coords{}) == UNREACHABLE)

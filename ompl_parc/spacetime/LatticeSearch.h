@@ -54,8 +54,8 @@ namespace ompl_parc
 
         /** \brief A timed path from \e start (clear at timestep 0) to \e goal, arriving no earlier than timestep
             \e hold (from which the goal can be held: DynamicObstacles::earliestHold()); empty if the lattice has
-            none, after the expansion cap, once \e ptc fires, or if one move would take more than MAX_MOVE
-            timesteps. */
+            none, after the expansion cap, once \e ptc fires, if one move would take more than MAX_MOVE timesteps,
+            or if the bounds span more than MAX_STEPS lattice steps. */
         TimedPath plan(const std::vector<double> &start, const std::vector<double> &goal, std::size_t hold,
                        const ompl::base::PlannerTerminationCondition &ptc) const;
 
@@ -66,6 +66,8 @@ namespace ompl_parc
         /** \brief The most timesteps of one lattice move; plan() finds no path at a resolution that needs more
             (at resolution 128 a move of one unit takes 128). */
         static constexpr std::size_t MAX_MOVE = 4096;
+        /** \brief The most lattice steps across the bounds, per axis; plan() finds no path in wider ones. */
+        static constexpr double MAX_STEPS = 1e8;
 
       private:
         DynamicObstaclesPtr obstacles_;
