@@ -123,7 +123,7 @@ namespace
         {
             const auto si = MultiRobotSpaceInformation::get(planner.getSpaceInformation(), "ompl_parc_demo");
             PlanSmoother smoother(si, seed);
-            smoother.setReplanner(std::make_shared<PrioritizedSTRRTSolver>());
+            smoother.setReplanner(PrioritizedSTRRTSolver::makeReplanner());
             try
             {
                 report = smoother.smooth(plan, ompl::base::plannerOrTerminationCondition(

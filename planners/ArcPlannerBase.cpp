@@ -45,7 +45,7 @@ ompl_parc::ArcPlannerBase::ArcPlannerBase(const ob::SpaceInformationPtr &si, con
     declareParam<std::string>("profile", this, &ArcPlannerBase::setProfile, &ArcPlannerBase::getProfile,
                               "mobile,planar,panda");
     smoothing_.declareParameter(*this);
-    smoothing_.setReplanner([] { return std::make_shared<PrioritizedSTRRTSolver>(); });
+    smoothing_.setReplanner([] { return PrioritizedSTRRTSolver::makeReplanner(); });
     declareParam<unsigned int>("window", this, &ArcPlannerBase::setWindow, &ArcPlannerBase::getWindow, "1:10:2000");
     declareParam<std::string>("growth", this, &ArcPlannerBase::setGrowth, &ArcPlannerBase::getGrowth,
                               "linear,exponential");

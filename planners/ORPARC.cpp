@@ -22,7 +22,7 @@ ompl_parc::ORPARC::ORPARC(const ob::SpaceInformationPtr &si)
     // The prototype's GenericParams themselves: setting "window" on ORPARC sets the prototype's window.
     params().include(prototype_->params());
     race_.declareInstances(params());
-    smoothing_.setReplanner([] { return std::make_shared<PrioritizedSTRRTSolver>(); });
+    smoothing_.setReplanner([] { return PrioritizedSTRRTSolver::makeReplanner(); });
     declareParam<unsigned int>("total_workers", this, &ORPARC::setTotalWorkers, &ORPARC::getTotalWorkers, "1:1:64");
     declareParam<std::string>("objective", this, &ORPARC::setObjective, &ORPARC::getObjective,
                               "first,makespan,sum_of_costs");

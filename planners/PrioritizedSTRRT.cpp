@@ -31,7 +31,7 @@ ompl_parc::PrioritizedSTRRT::PrioritizedSTRRT(const ob::SpaceInformationPtr &si)
     declareParam<unsigned int>("sample_cap", this, &PrioritizedSTRRT::setSampleCap, &PrioritizedSTRRT::getSampleCap,
                                "0:1000:100000000");
     smoothing_.declareParameter(*this);
-    smoothing_.setReplanner([] { return std::make_shared<PrioritizedSTRRTSolver>(); });
+    smoothing_.setReplanner([] { return PrioritizedSTRRTSolver::makeReplanner(); });
     declareParam<std::string>("rewiring", this, &PrioritizedSTRRT::setRewiring, &PrioritizedSTRRT::getRewiring);
     declareParam<unsigned int>("batch_size", this, &PrioritizedSTRRT::setBatchSize, &PrioritizedSTRRT::getBatchSize,
                                "1:1:1000000");
@@ -136,10 +136,10 @@ ob::PlannerStatus ompl_parc::PrioritizedSTRRT::solve(const ob::PlannerTerminatio
     const InnerPlannerLog::Session session;
     {
         const InnerPlannerLog::Scope inner;
-        // Rounds after the first shuffle the base order (which breaks the blocking order's ties and cycles):
-        // the lattice plans an order the same way every time, so only another order can change the outcome.
+        // With the lattice, rounds after the first shuffle the base order (which breaks the blocking order's ties
+        // and cycles): the lattice plans an order the same way every time, so only another order can change that.
         auto reshuffled = settings_;
-        reshuffled.shuffle = true;
+        reshuffled.shuffle = settings_.shuffle || settings_.lattice;
         const PrioritizedSTRRTSolver first(settings_), later(reshuffled);
         solved_ = false;
         // Round r: each robot's ST-RRT capped at sample_cap x 2^r iterations (no cap and one round for 0); a round

@@ -26,8 +26,8 @@ namespace ompl_parc
 
         /** \brief INVALID_START / INVALID_GOAL (logging which robot is invalid), EXACT_SOLUTION, or TIMEOUT.
             Plans in rounds until the termination condition: round r caps each robot's ST-RRT at sample_cap x 2^r
-            iterations and draws fresh samples (after the first, with a shuffled base order: the lattice plans an
-            order the same way every time), and within a round a robot that fails is promoted to the front
+            iterations and draws fresh samples (after the first, with the lattice, a shuffled base order: the lattice
+           plans an order the same way every time), and within a round a robot that fails is promoted to the front
             (promote). With sample_cap 0 there is one uncapped round, which may fail before the condition. */
         using ompl::base::Planner::solve;  // keep solve(seconds) visible next to the override
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
@@ -56,7 +56,7 @@ namespace ompl_parc
             only where the lattice has no path. */
         void setLattice(bool lattice) { settings_.lattice = lattice; }
         bool getLattice() const { return settings_.lattice; }
-        /** \brief The lattice's step; 0 (default): half the robot's bounding radius. Throws for a negative or
+        /** \brief The lattice's step; 0 (default): the robot's bounding radius. Throws for a negative or
             non-finite step. */
         void setLatticeStep(double step);
         double getLatticeStep() const { return settings_.latticeStep; }

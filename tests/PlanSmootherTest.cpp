@@ -61,7 +61,7 @@ TEST(PlanSmoother, RandomValidPlansStayValidAndNeverGetLonger)
         const MultiRobotPlan before = plan;
         PlanSmoother smoother(si, static_cast<std::uint_fast32_t>(k + 1));
         if (k % 2 == 0)
-            smoother.setReplanner(std::make_shared<PrioritizedSTRRTSolver>());
+            smoother.setReplanner(PrioritizedSTRRTSolver::makeReplanner());
         const SmoothingReport report = smoother.smooth(plan, ob::timedPlannerTerminationCondition(60.));
         ++smoothed;
         const auto check = SolutionValidator(own).validate(plan);

@@ -55,7 +55,9 @@ namespace ompl_parc
         bool isClear(const double *q, std::size_t timestep) const;
 
         /** \brief True if the robot is clear (isClear()) at every timestep \e first + s, s = 1..\e steps, moving
-            straight from \e from to \e to as a timed path lays it (TimedPath::interpolate(from, to, s, steps)).
+            straight from \e from (a valid configuration: the motion's start, checked before) to \e to as a timed
+            path lays it (TimedPath::interpolate(from, to, s, steps)). Keeps up to \e steps + 1 bodies per thread
+            between calls, so \e steps should stay modest (LatticeSearch: at most a few thousand).
             The same answer as isClear() at each of those timesteps, or stricter where the robot can sweep the
             motion at once (Robot::sweepValid); faster for robots with a box over configurations
             (Robot::expandBoxOver): an obstacle is checked only in blocks of timesteps whose box meets the motion's. */

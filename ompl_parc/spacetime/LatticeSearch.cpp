@@ -2,6 +2,7 @@
 
 #include "ompl_parc/collision/CollisionBody.h"
 
+#include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
@@ -81,7 +82,8 @@ namespace
       public:
         StaticDistances(const ompl_parc::Robot &robot, const std::vector<double> &low, const std::vector<double> &high,
                         double step, const std::vector<double> &start, const std::vector<double> &goal,
-                        std::size_t move, double finishRadius, double resolution)
+                        std::size_t move, double finishRadius, double resolution,
+                        const ompl::base::PlannerTerminationCondition &ptc)
             : dimension_(robot.getDimension()), move_(move)
         {
             std::size_t points = 1;
@@ -90,20 +92,23 @@ namespace
                 const auto at = [&](long c) { return start[i] + step * static_cast<double>(c); };
                 long lo = static_cast<long>(std::ceil((low[i] - start[i]) / step)),
                      hi = static_cast<long>(std::floor((high[i] - start[i]) / step));
-                while (at(lo) < low[i])
+                // Rounding moves the first and last lattice points inside the bounds by a step at most.
+                for (int k = 0; k < 2 && at(lo) < low[i]; ++k)
                     ++lo;
-                while (at(lo - 1) >= low[i])
+                for (int k = 0; k < 2 && at(lo - 1) >= low[i]; ++k)
                     --lo;
-                while (at(hi) > high[i])
+                for (int k = 0; k < 2 && at(hi) > high[i]; ++k)
                     --hi;
-                while (at(hi + 1) <= high[i])
+                for (int k = 0; k < 2 && at(hi + 1) <= high[i]; ++k)
                     ++hi;
                 min_[i] = lo;
                 count_[i] = hi >= lo ? static_cast<std::size_t>(hi - lo + 1) : 0;
                 target_[i] = static_cast<std::int32_t>(std::lround((goal[i] - start[i]) / step));
+                if (count_[i] == 0 || at(0) < low[i] || at(0) > high[i])
+                    outside_ = true;  // the start is outside the bounds: no lattice point reaches the goal
                 points = count_[i] == 0 || points > MAX_POINTS ? MAX_POINTS + 1 : points * count_[i];
             }
-            if (points > MAX_POINTS)
+            if (points > MAX_POINTS || outside_)
                 return;
             distances_.assign(points, UNREACHABLE);
             std::vector<double> q(dimension_), p(dimension_);
@@ -127,8 +132,13 @@ namespace
                 if (staticMotionValid(robot, q.data(), goal.data(), steps))
                     open.push({distances_[index] = steps, index});
             }
-            while (!open.empty())
+            for (std::size_t pops = 0; !open.empty(); ++pops)
             {
+                if (pops % 256 == 0 && ptc)
+                {
+                    outside_ = true;  // stopped: no distances, no search
+                    return;
+                }
                 const auto [distance, index] = open.top();
                 open.pop();
                 if (distance != distances_[index])
@@ -157,6 +167,8 @@ namespace
         /** Timesteps from lattice point \e c to the goal, UNREACHABLE if none or outside the bounds. */
         std::size_t at(const Coords &c) const
         {
+            if (outside_)
+                return UNREACHABLE;
             if (distances_.empty())
             {
                 std::size_t steps = 0;
@@ -186,6 +198,8 @@ namespace
         std::array<std::size_t, ompl_parc::LatticeSearch::MAX_DIMENSION> count_{};
         Coords target_{};
         std::vector<std::size_t> distances_;
+        /** The start lies outside the bounds, or the stop came during the Dijkstra: nothing is reachable. */
+        bool outside_{false};
     };
 }  // namespace
 
@@ -208,8 +222,8 @@ ompl_parc::LatticeSearch::LatticeSearch(DynamicObstaclesPtr obstacles, std::vect
 
 void ompl_parc::LatticeSearch::setHeuristicWeight(double weight)
 {
-    if (!(weight >= 1.) || !std::isfinite(weight))
-        throw ompl::Exception("LatticeSearch", "the heuristic weight must be at least 1 and finite");
+    if (!(weight >= 1. && weight <= MAX_WEIGHT))
+        throw ompl::Exception("LatticeSearch", "the heuristic weight must be in [1, 1000]");
     weight_ = weight;
 }
 
@@ -257,10 +271,14 @@ ompl_parc::TimedPath ompl_parc::LatticeSearch::plan(const std::vector<double> &s
     if (move > MAX_MOVE)
         return TimedPath();  // a resolution far above the usual: the motions would hold too many timesteps
     for (unsigned int i = 0; i < d; ++i)
-        if (!((high_[i] - low_[i]) / step_ < MAX_STEPS) || !(std::abs(goal[i] - start[i]) / step_ < MAX_STEPS))
-            return TimedPath();  // bounds or a way too long in lattice steps for the lattice's coordinates
+        if (!((high_[i] - low_[i]) / step_ < MAX_STEPS) || !(std::abs(goal[i] - start[i]) / step_ < MAX_STEPS) ||
+            !(step_ > 1e-9 * (1. + std::abs(start[i]))))
+            return TimedPath();  // bounds or a way too long in lattice steps, or a step lost in the coordinates'
+                                 // rounding
     const double finishRadius = step_ * std::sqrt(static_cast<double>(d)) * (1. + 1e-9);
-    const StaticDistances toGoal(robot, low_, high_, step_, start, goal, move, finishRadius, resolution);
+    if (ptc)
+        return TimedPath();
+    const StaticDistances toGoal(robot, low_, high_, step_, start, goal, move, finishRadius, resolution, ptc);
     if (toGoal.at(Coords{}) == UNREACHABLE)
         return TimedPath();  // not even without the moving obstacles
     const auto estimate = [&](const Coords &c, std::size_t timestep)
@@ -281,8 +299,9 @@ ompl_parc::TimedPath ompl_parc::LatticeSearch::plan(const std::vector<double> &s
     };
     while (!open.empty())
     {
-        if (++expansions_ > maxExpansions_ || (expansions_ % 64 == 0 && ptc))
+        if (expansions_ >= maxExpansions_ || (expansions_ % 8 == 0 && ptc))
             return TimedPath();
+        ++expansions_;
         const std::size_t index = open.top().state;
         open.pop();
         const LatticeState current = states[index];
@@ -314,7 +333,8 @@ ompl_parc::TimedPath ompl_parc::LatticeSearch::plan(const std::vector<double> &s
             }
         }
         const std::size_t later = current.timestep + move;
-        if (current.timestep < settled && obstacles_->isMotionClear(q.data(), q.data(), current.timestep, move))
+        if (current.timestep < settled && seen.count({current.coords, std::min(later, settled)}) == 0 &&
+            obstacles_->isMotionClear(q.data(), q.data(), current.timestep, move))
             push(current.coords, later, index);
         for (unsigned int i = 0; i < d; ++i)
             for (int sign : {-1, 1})

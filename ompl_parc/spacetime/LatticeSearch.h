@@ -17,13 +17,16 @@ namespace ompl_parc
 
         Prioritised planning asks a robot planned late to thread between the paths of all robots before it: wait
         at a door until a dozen others have passed, then go. A sampling planner (ST-RRT) has to draw such a
-        timing; this search enumerates them. It is complete on its lattice: once every obstacle has stopped
-        moving and the goal can be held, a lattice point is one state whatever the time, so the search ends,
-        with the earliest lattice arrival (the heuristic is the lattice distance, which may overestimate by the
-        last straight move). Every motion is checked as the plan lays it (DynamicObstacles::isMotionClear), so
-        the path is clear at every timestep. Applies to robots whose body's box follows from a box of
+        timing; this search enumerates them. Its heuristic is the time to the goal among the static obstacles
+        (a Dijkstra over the lattice; the lattice distance on lattices too large for it), weighted (2 by
+        default), so the arrival is not the earliest but the search is short. It is complete on its lattice: once
+        every obstacle has stopped moving and the goal can be held, a lattice point is one state whatever the
+        time, so the search ends. Every motion is checked as the plan lays it (DynamicObstacles::isMotionClear),
+        so the path is clear at every timestep. Applies to robots whose body's box follows from a box of
         configurations (Robot::expandBoxOver: translating discs), where a motion's check skips far obstacles
-        blockwise; for others it would be as slow as checking every timestep against every obstacle. */
+        blockwise; for others it would be as slow as checking every timestep against every obstacle. Memory:
+        about 100 bytes per state generated (up to 2d + 1 per expansion), some 100 MB at the default cap in the
+        worst case. */
     class LatticeSearch
     {
       public:
@@ -45,7 +48,7 @@ namespace ompl_parc
         void setMaxExpansions(std::size_t expansions) { maxExpansions_ = expansions; }
         std::size_t getMaxExpansions() const { return maxExpansions_; }
 
-        /** \brief The weight of the heuristic (default 2; 1: the earliest lattice arrival). Above 1 the search goes
+        /** \brief The weight of the heuristic, in [1, MAX_WEIGHT] (default 2; throws outside). Above 1 the search goes
             as far towards the goal as the others let it and waits there, instead of trying every place and time
             to wait at on the way: a robot that must let a dozen others pass a door costs a few thousand
             expansions, not a hundred thousand. */
@@ -63,6 +66,7 @@ namespace ompl_parc
         std::size_t getExpansions() const { return expansions_; }
 
         static constexpr unsigned int MAX_DIMENSION = 3;
+        static constexpr double MAX_WEIGHT = 1000.;
         /** \brief The most timesteps of one lattice move; plan() finds no path at a resolution that needs more
             (at resolution 128 a move of one unit takes 128). */
         static constexpr std::size_t MAX_MOVE = 4096;

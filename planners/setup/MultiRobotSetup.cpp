@@ -164,7 +164,7 @@ ompl_parc::SmoothingReport ompl_parc::MultiRobotSetup::simplify(double seconds, 
     const InnerPlannerLog::Session session;
     SmoothingStep step;
     step.setBudget(seconds);
-    step.setReplanner([] { return std::make_shared<PrioritizedSTRRTSolver>(); });
+    step.setReplanner([] { return PrioritizedSTRRTSolver::makeReplanner(); });
     step.apply(si_, *plan_, ob::plannerNonTerminatingCondition(), mixSeed(seed, 0x5300));
     return step.getReport().value_or(SmoothingReport{});
 }

@@ -57,6 +57,13 @@ ompl_parc::PrioritizedSTRRTSolver::PrioritizedSTRRTSolver(PrioritizedSTRRTSettin
     configure(probe, settings_);
 }
 
+std::shared_ptr<ompl_parc::PrioritizedSTRRTSolver> ompl_parc::PrioritizedSTRRTSolver::makeReplanner()
+{
+    PrioritizedSTRRTSettings settings;
+    settings.lattice = false;
+    return std::make_shared<PrioritizedSTRRTSolver>(settings);
+}
+
 std::vector<std::size_t> ompl_parc::PrioritizedSTRRTSolver::priorityOrder(std::size_t size,
                                                                           std::uint_fast32_t seed) const
 {
@@ -71,12 +78,10 @@ std::vector<std::size_t> ompl_parc::PrioritizedSTRRTSolver::priorityOrder(std::s
     return order;
 }
 
-ompl_parc::TimedPath ompl_parc::PrioritizedSTRRTSolver::planRobot(const ob::StateSpacePtr &space,
-                                                                  const DynamicObstaclesPtr &obstacles,
-                                                                  const std::vector<double> &start,
-                                                                  const std::vector<double> &goal, std::size_t hold,
-                                                                  const ob::PlannerTerminationCondition &ptc,
-                                                                  std::uint_fast32_t seed, bool lattice) const
+ompl_parc::TimedPath ompl_parc::PrioritizedSTRRTSolver::planRobot(
+    const ob::StateSpacePtr &space, const DynamicObstaclesPtr &obstacles, const std::vector<double> &start,
+    const std::vector<double> &goal, std::size_t hold, const Subproblem &subproblem,
+    const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed, bool lattice) const
 {
     if (hold == 0 && start == goal)
         return TimedPath(static_cast<unsigned int>(start.size()), start.data());  // already there, and safe to stay
@@ -87,10 +92,12 @@ ompl_parc::TimedPath ompl_parc::PrioritizedSTRRTSolver::planRobot(const ob::Stat
         LatticeSearch search(obstacles, bounds.low, bounds.high,
                              settings_.latticeStep > 0. ? settings_.latticeStep
                                                         : LatticeSearch::defaultStep(*obstacles->getRobot(), start));
+        // The lattice has its own expansion cap; the sample cap counts ST-RRT's iterations only.
         TimedPath path = search.plan(start, goal, hold, ptc);
         if (!path.empty() || ptc)
             return path;
     }
+    const auto capped = subproblem.cappedTermination(ptc);
     const auto si = createSpaceTimeSpaceInformation(space, obstacles);
 
     auto pdef = std::make_shared<ob::ProblemDefinition>(si);
@@ -101,7 +108,7 @@ ompl_parc::TimedPath ompl_parc::PrioritizedSTRRTSolver::planRobot(const ob::Stat
     planner.setLocalSeed(seed);
     planner.setProblemDefinition(pdef);
     planner.setup();
-    if (planner.solve(ptc) != ob::PlannerStatus::EXACT_SOLUTION)
+    if (planner.solve(capped) != ob::PlannerStatus::EXACT_SOLUTION)
         return TimedPath();
     return std::static_pointer_cast<SpaceTimeMotionValidator>(si->getMotionValidator())
         ->layOnGrid(*pdef->getSolutionPath()->as<og::PathGeometric>());
@@ -119,8 +126,7 @@ std::vector<std::size_t> ompl_parc::PrioritizedSTRRTSolver::unblockedOrder(
             return order;  // after the stop nobody is planned: the order no longer matters
         alone[k] = planRobot(local.getCompositeSpace()->getRobotSpace(k),
                              std::make_shared<DynamicObstacles>(team[k], si.getResolution()), subproblem.starts[k],
-                             subproblem.goals[k], 0, subproblem.cappedTermination(ptc), mixSeed(seed, 0xa10e + k),
-                             settings_.lattice);
+                             subproblem.goals[k], 0, subproblem, ptc, mixSeed(seed, 0xa10e + k), settings_.lattice);
     }
     return BlockingOrder(team, alone, subproblem.starts, subproblem.goals, ptc).order(order);
 }
@@ -152,9 +158,8 @@ std::optional<std::size_t> ompl_parc::PrioritizedSTRRTSolver::planInOrder(
             return k;
         }
         // The sample cap bounds each robot's ST-RRT iterations.
-        paths[k] =
-            planRobot(local.getCompositeSpace()->getRobotSpace(k), obstacles, subproblem.starts[k], subproblem.goals[k],
-                      *hold, subproblem.cappedTermination(ptc), mixSeed(seed, 0x57aa + k), lattice);
+        paths[k] = planRobot(local.getCompositeSpace()->getRobotSpace(k), obstacles, subproblem.starts[k],
+                             subproblem.goals[k], *hold, subproblem, ptc, mixSeed(seed, 0x57aa + k), lattice);
         if (paths[k].empty())
         {
             hopeless = static_cast<bool>(ptc);

@@ -64,6 +64,10 @@ namespace ompl_parc
         /** \brief Throws ompl::Exception for settings STRRTstar rejects. */
         explicit PrioritizedSTRRTSolver(PrioritizedSTRRTSettings settings = PrioritizedSTRRTSettings());
 
+        /** \brief The solver PlanSmoother replans with: ST-RRT alone. The smoother keeps a replanned piece only if it
+            arrives earlier, and a lattice path, which moves along the axes, seldom does. */
+        static std::shared_ptr<PrioritizedSTRRTSolver> makeReplanner();
+
         std::string getName() const override { return "pp-st-rrt"; }
         bool usesContext() const override { return settings_.avoidOthers; }
         const PrioritizedSTRRTSettings &getSettings() const { return settings_; }
@@ -106,12 +110,13 @@ namespace ompl_parc
                                                bool &hopeless) const;
 
         /** \brief One robot's timestep path from \e start to \e goal among \e obstacles, arriving no earlier
-            than timestep \e hold, in \e space: on the lattice first if \e lattice is set and the robot translates,
-            else (or if the lattice has no path) by ST-RRT; empty on failure. */
+            than timestep \e hold, in \e space: on the lattice first if \e lattice is set and the robot translates
+            (until \e ptc or its own expansion cap), else (or if the lattice has no path) by ST-RRT, capped by
+            \e subproblem's sample cap; empty on failure. */
         TimedPath planRobot(const ompl::base::StateSpacePtr &space, const DynamicObstaclesPtr &obstacles,
                             const std::vector<double> &start, const std::vector<double> &goal, std::size_t hold,
-                            const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed,
-                            bool lattice) const;
+                            const Subproblem &subproblem, const ompl::base::PlannerTerminationCondition &ptc,
+                            std::uint_fast32_t seed, bool lattice) const;
 
         PrioritizedSTRRTSettings settings_;
     };
