@@ -85,8 +85,7 @@ bool ompl_parc::DynamicObstacles::isMotionClear(const double *from, const double
         lo[i] = std::min(lo[i], to[i]);
         hi[i] = std::max(hi[i], to[i]);
     }
-    const auto swept = robot_->sweepValid(from, to);
-    if (swept && !*swept)
+    if (!isStaticMotionValid(from, to, steps))
         return false;
     if (!robot_->expandBoxOver(lo.data(), hi.data(), boxLo, boxHi))
     {
@@ -98,13 +97,6 @@ bool ompl_parc::DynamicObstacles::isMotionClear(const double *from, const double
         }
         return true;
     }
-    if (!swept)
-        for (std::size_t s = 1; s <= steps; ++s)
-        {
-            TimedPath::interpolate(from, to, s, steps, d, q.data());
-            if (!robot_->isValid(q.data()))
-                return false;
-        }
     // Bodies along the motion, computed when an obstacle's block first needs them (most motions need none).
     thread_local std::vector<CollisionBody> bodies;
     thread_local std::vector<unsigned char> computed;
@@ -138,6 +130,22 @@ bool ompl_parc::DynamicObstacles::isMotionClear(const double *from, const double
                         return false;
             s = blockEnd + 1;
         }
+    }
+    return true;
+}
+
+bool ompl_parc::DynamicObstacles::isStaticMotionValid(const double *from, const double *to, std::size_t steps) const
+{
+    if (const auto swept = robot_->sweepValid(from, to))
+        return *swept;
+    const unsigned int d = robot_->getDimension();
+    thread_local std::vector<double> q;
+    q.resize(d);
+    for (std::size_t s = 1; s <= steps; ++s)
+    {
+        TimedPath::interpolate(from, to, s, steps, d, q.data());
+        if (!robot_->isValid(q.data()))
+            return false;
     }
     return true;
 }

@@ -63,6 +63,11 @@ namespace ompl_parc
             (Robot::expandBoxOver): an obstacle is checked only in blocks of timesteps whose box meets the motion's. */
         bool isMotionClear(const double *from, const double *to, std::size_t first, std::size_t steps) const;
 
+        /** \brief True if the robot may move straight from \e from (valid) to \e to among the static obstacles: its
+            sweep where it has one (Robot::sweepValid), else its configurations at the \e steps timesteps the motion
+            is laid on. */
+        bool isStaticMotionValid(const double *from, const double *to, std::size_t steps) const;
+
         /** \brief The last timestep at which an obstacle still moves (0 if none): from then on nothing changes. */
         std::size_t getLastMove() const { return lastMove_; }
 

@@ -57,22 +57,6 @@ namespace
     };
     constexpr std::size_t UNREACHABLE = std::numeric_limits<std::size_t>::max();
 
-    /** Whether \e robot may move straight from \e a to \e b among the static obstacles (the sweep where the robot
-        has one, else its configurations at \e steps timesteps). */
-    bool staticMotionValid(const ompl_parc::Robot &robot, const double *a, const double *b, std::size_t steps)
-    {
-        if (const auto swept = robot.sweepValid(a, b))
-            return *swept;
-        std::vector<double> q(robot.getDimension());
-        for (std::size_t s = 1; s <= steps; ++s)
-        {
-            ompl_parc::TimedPath::interpolate(a, b, s, steps, robot.getDimension(), q.data());
-            if (!robot.isValid(q.data()))
-                return false;
-        }
-        return true;
-    }
-
     /** Timesteps from each lattice point to the goal with the moving obstacles left out (Dijkstra from the goal
         over the lattice's static motions): the search's heuristic, exact where no robot is in the way, and a
         point without one cannot reach the goal at all. Beyond MAX_POINTS lattice points in the bounds (a wide
@@ -80,12 +64,13 @@ namespace
     class StaticDistances
     {
       public:
-        StaticDistances(const ompl_parc::Robot &robot, const std::vector<double> &low, const std::vector<double> &high,
-                        double step, const std::vector<double> &start, const std::vector<double> &goal,
-                        std::size_t move, double finishRadius, double resolution,
+        StaticDistances(const ompl_parc::DynamicObstacles &obstacles, const std::vector<double> &low,
+                        const std::vector<double> &high, double step, const std::vector<double> &start,
+                        const std::vector<double> &goal, std::size_t move, double finishRadius, double resolution,
                         const ompl::base::PlannerTerminationCondition &ptc)
-            : dimension_(robot.getDimension()), move_(move)
+            : dimension_(obstacles.getRobot()->getDimension()), move_(move)
         {
+            const ompl_parc::Robot &robot = *obstacles.getRobot();
             std::size_t points = 1;
             for (unsigned int i = 0; i < dimension_; ++i)
             {
@@ -129,7 +114,7 @@ namespace
                 if (remaining > finishRadius || !robot.isValid(q.data()))
                     continue;
                 const auto steps = static_cast<std::size_t>(std::ceil(remaining * resolution));
-                if (staticMotionValid(robot, q.data(), goal.data(), steps))
+                if (obstacles.isStaticMotionValid(q.data(), goal.data(), steps))
                     open.push({distances_[index] = steps, index});
             }
             for (std::size_t pops = 0; !open.empty(); ++pops)
@@ -156,7 +141,7 @@ namespace
                         if (distances_[neighbour] <= distance + move_)
                             continue;
                         config(neighbour, p);
-                        if (!robot.isValid(p.data()) || !staticMotionValid(robot, p.data(), q.data(), move_))
+                        if (!robot.isValid(p.data()) || !obstacles.isStaticMotionValid(p.data(), q.data(), move_))
                             continue;
                         open.push({distances_[neighbour] = distance + move_, neighbour});
                     }
@@ -278,7 +263,7 @@ ompl_parc::TimedPath ompl_parc::LatticeSearch::plan(const std::vector<double> &s
     const double finishRadius = step_ * std::sqrt(static_cast<double>(d)) * (1. + 1e-9);
     if (ptc)
         return TimedPath();
-    const StaticDistances toGoal(robot, low_, high_, step_, start, goal, move, finishRadius, resolution, ptc);
+    const StaticDistances toGoal(*obstacles_, low_, high_, step_, start, goal, move, finishRadius, resolution, ptc);
     if (toGoal.at(Coords{}) == UNREACHABLE)
         return TimedPath();  // not even without the moving obstacles
     const auto estimate = [&](const Coords &c, std::size_t timestep)
