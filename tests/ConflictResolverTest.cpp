@@ -27,10 +27,35 @@ namespace
         {
             std::lock_guard<std::mutex> lock(mutex_);
             asked_.push_back(sub);
+            memories_.push_back(0);
             return false;
+        }
+        /** \brief A memory numbered from 1 in the order they are made. */
+        class Numbered : public Memory
+        {
+          public:
+            explicit Numbered(int number) : number_(number) {}
+            const int number_;
+        };
+        std::unique_ptr<Memory> makeMemory() const override
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            return std::make_unique<Numbered>(++made_);
+        }
+        bool resume(const MultiRobotSpaceInformation &si, const Subproblem &sub,
+                    const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed, Patch &patch,
+                    Memory *memory) const override
+        {
+            const bool solved = solve(si, sub, ptc, seed, patch);
+            std::lock_guard<std::mutex> lock(mutex_);
+            memories_.back() = memory == nullptr ? 0 : dynamic_cast<Numbered &>(*memory).number_;
+            return solved;
         }
         mutable std::mutex mutex_;
         mutable std::vector<Subproblem> asked_;
+        /** \brief Per call, the number of the memory it got (0: none). */
+        mutable std::vector<int> memories_;
+        mutable int made_{0};
         /** \brief Whether it claims to plan around the other robots (as PP-ST-RRT does). */
         bool context_{false};
     };
@@ -134,6 +159,18 @@ TEST_F(HeadOn, FailedWindowsGrowUntilTheGlobalProblemOfTheTeamThenOfAllRobots)
     const std::vector<std::size_t> pair = {0, 1}, all = {0, 1, 2, 3};
     EXPECT_EQ(globalTeams, (std::vector<std::vector<std::size_t>>{pair, all, all}));
     EXPECT_TRUE(asked[0].robots == pair && asked[1].robots == pair) << "windows keep the team";
+    // Windows are new problems each time; the global rounds of one team are one problem, whose calls share a memory
+    // (SubproblemSolver::resume); the whole team's rounds get another.
+    std::vector<int> globalMemories;
+    for (std::size_t c = 0; c < asked.size(); ++c)
+        if (asked[c].bounds.empty())
+            globalMemories.push_back(solver->memories_[c]);
+        else
+            EXPECT_EQ(solver->memories_[c], 0) << "window call " << c;
+    ASSERT_EQ(globalMemories.size(), 3u);
+    EXPECT_NE(globalMemories[0], 0);
+    EXPECT_NE(globalMemories[1], globalMemories[0]);
+    EXPECT_EQ(globalMemories[2], globalMemories[1]);
 
     // Without a solver that plans around the others, their paths cannot be what failed it: the team keeps trying.
     auto blind = std::make_shared<RecordingSolver>();

@@ -3,6 +3,7 @@
 #include "ompl_parc/planners/PrioritizedSTRRT.h"
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
 #include "ompl_parc/robots/DiscRobot.h"
+#include "ompl_parc/scenarios/ProblemFamilies.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 #include "ompl_parc/spacetime/DynamicObstacles.h"
 
@@ -10,6 +11,10 @@
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/util/Exception.h>
 #include <ompl/util/Time.h>
+
+#include <climits>
+#include <cstdint>
+#include <optional>
 
 using namespace ompl_parc;
 using ompl_parc::test::validatePatch;
@@ -322,6 +327,58 @@ TEST(PrioritizedSTRRTSolver, SameSeedGivesTheSamePatch)
     EXPECT_NE(a.paths, c.paths);
     EXPECT_EQ(solver.priorityOrder(4, 11), solver.priorityOrder(4, 11));
     EXPECT_TRUE(validatePatch(problem, sub, a).valid);
+}
+
+namespace
+{
+    /** A termination condition that fires at its (\e budget + 1)-th evaluation (none: never) and counts them in
+        \e count: a cut at the same point of the work on every run, whatever the machine's speed. */
+    ob::PlannerTerminationCondition afterEvaluations(std::optional<std::size_t> budget, std::size_t &count)
+    {
+        count = 0;
+        return ob::PlannerTerminationCondition([budget, &count] { return ++count > budget.value_or(SIZE_MAX); });
+    }
+}  // namespace
+
+TEST(PrioritizedSTRRTSolver, CallsCutOneAfterAnotherFindTheUncutPatch)
+{
+    // 16 robots in generated rooms: the lattice, the unblocking order and promotions (ARC's global rounds cut such
+    // solves by time).
+    const auto problem = scenarios::generateFamilyInstance("rooms", 16, 1);
+    const auto &si = *problem.getSpaceInformation();
+    const auto sub = wholeProblem(problem);
+    const PrioritizedSTRRTSolver solver;
+    std::size_t count = 0;
+    Patch uncut;
+    ASSERT_TRUE(solver.solve(si, sub, afterEvaluations(std::nullopt, count), 7, uncut));
+    const std::size_t total = count;
+    ASSERT_TRUE(validatePatch(problem, sub, uncut).valid);
+
+    // Each call may do a quarter of that: starting over, no call gets there; going on, a few do, and they find the
+    // same patch (the robots planned before a cut are kept, alone for the order or in it; the one being planned is
+    // planned again with the same seed).
+    const std::size_t budget = total / 4;
+    Patch patch;
+    EXPECT_FALSE(solver.solve(si, sub, afterEvaluations(budget, count), 7, patch));
+    EXPECT_FALSE(solver.resume(si, sub, afterEvaluations(budget, count), 7, patch, nullptr)) << "no memory: solve()";
+    const auto memory = solver.makeMemory();
+    ASSERT_NE(memory, nullptr);
+    unsigned int calls = 0;
+    bool solved = false;
+    while (!solved && calls < 20)
+    {
+        ++calls;
+        solved = solver.resume(si, sub, afterEvaluations(budget, count), 7 + calls, patch, memory.get());
+    }
+    ASSERT_TRUE(solved) << "in " << calls << " calls";
+    EXPECT_GE(calls, 4u);
+    EXPECT_EQ(patch.paths, uncut.paths) << "the first call's seed decides, as in one uncut call";
+
+    // A solved call leaves the memory fresh: the next call is a whole solve of its own (here uncut, seed 7).
+    Patch again;
+    ASSERT_TRUE(solver.resume(si, sub, afterEvaluations(std::nullopt, count), 7, again, memory.get()));
+    EXPECT_EQ(again.paths, uncut.paths);
+    EXPECT_EQ(count, total);
 }
 
 TEST(PrioritizedSTRRT, RejectsBadInputsClearly)

@@ -145,6 +145,14 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
     Repair repair;
     std::vector<std::size_t> members = team;
     std::size_t lastStart = 0, lastEnd = 0;
+    // The global rounds of one team are one problem (only the sample cap grows): each solver goes on from where its
+    // last round's call was cut instead of starting over (SubproblemSolver::resume).
+    std::vector<std::unique_ptr<SubproblemSolver::Memory>> memories(hierarchy_.size());
+    const auto forget = [&]
+    {
+        std::transform(hierarchy_.begin(), hierarchy_.end(), memories.begin(),
+                       [](const SubproblemSolverPtr &solver) { return solver->makeMemory(); });
+    };
     for (unsigned int k = 0; !ptc; ++k)
     {
         Subproblem sub =
@@ -154,13 +162,15 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
         {
             repair.global = true;
             sub = makeGlobal(plan, team, 0);
+            forget();
         }
         t.globalRounds += repair.global ? 1 : 0;
         lastStart = sub.windowStart;
         lastEnd = sub.windowEnd;
         t.expansions = k;
-        for (const auto &solver : hierarchy_)
+        for (std::size_t s = 0; s < hierarchy_.size(); ++s)
         {
+            const auto &solver = hierarchy_[s];
             if (ptc)
                 break;
             ++t.calls;
@@ -170,7 +180,8 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
                 ptc, ob::PlannerTerminationCondition([start, cap]
                                                      { return ompl::time::seconds(ompl::time::now() - start) > cap; }));
             const StopSignal::Scope scope(capped);
-            const bool solved = solver->solve(si_, sub, capped, mixSeed(seed, t.calls), repair.patch);
+            const bool solved =
+                solver->resume(si_, sub, capped, mixSeed(seed, t.calls), repair.patch, memories[s].get());
             t.longestCall = std::max(t.longestCall, ompl::time::seconds(ompl::time::now() - start));
             if (solved)
             {
@@ -185,6 +196,7 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
         {
             members.resize(si_.getRobotCount());
             std::iota(members.begin(), members.end(), 0);
+            forget();  // another team
         }
     }
     return std::nullopt;

@@ -35,6 +35,29 @@ namespace ompl_parc
         virtual bool solve(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
                            const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed,
                            Patch &patch) const = 0;
+
+        /** \brief What a solver keeps from one call to the next on the same problem. ARC's global rounds give each
+            call a time cap that doubles (ConflictResolver): a solver that starts over in every round redoes what
+            the rounds before it did, so a problem that needs T seconds costs about 2T before it is solved. */
+        class Memory
+        {
+          public:
+            virtual ~Memory() = default;
+        };
+
+        /** \brief A fresh memory for calls of resume() on one problem; none (the default) if the solver cannot go
+            on from where a call stopped. */
+        virtual std::unique_ptr<Memory> makeMemory() const { return nullptr; }
+
+        /** \brief solve(), going on from where the last call with \e memory (made by makeMemory(), used only on
+            \e subproblem's team, starts, goals and context; its sample cap may grow) stopped, and leaving in it
+            where this one stops. A null \e memory is a plain solve(). The caller keeps \e memory to one thread. */
+        virtual bool resume(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
+                            const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed, Patch &patch,
+                            Memory * /*memory*/) const
+        {
+            return solve(si, subproblem, ptc, seed, patch);
+        }
     };
 
     using SubproblemSolverPtr = std::shared_ptr<const SubproblemSolver>;

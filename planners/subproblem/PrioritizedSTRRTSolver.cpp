@@ -50,6 +50,40 @@ namespace
     }
 }  // namespace
 
+/** The state of a solve between calls (resume()): its seed, the robots planned alone for the unblocking order so far,
+    the order being tried, its attempt, and its robots planned so far (order[0, planned)) with their paths and the
+    bodies along them. */
+class ompl_parc::PrioritizedSTRRTSolver::Progress : public SubproblemSolver::Memory
+{
+  public:
+    std::optional<std::uint_fast32_t> seed;  // every draw of the solve derives from it; none: nothing done yet
+    std::vector<TimedPath> alone;
+    std::size_t aloneDone{0};
+    std::vector<std::size_t> order;  // empty: no order chosen yet
+    std::size_t attempt{0};
+    std::size_t planned{0};
+    std::vector<TimedPath> paths;  // by team position
+    Tracks tracks;                 // of order[0, planned), in that order
+
+    bool started() const { return !order.empty(); }
+
+    /** Try \e first. */
+    void start(std::vector<std::size_t> first)
+    {
+        paths.assign(first.size(), TimedPath());
+        order = std::move(first);
+        attempt = 0;
+        restartOrder();
+    }
+
+    /** The order changed: none of its robots is planned. */
+    void restartOrder()
+    {
+        planned = 0;
+        tracks.clear();
+    }
+};
+
 ompl_parc::PrioritizedSTRRTSolver::PrioritizedSTRRTSolver(PrioritizedSTRRTSettings settings)
     : settings_(std::move(settings))
 {
@@ -114,38 +148,44 @@ ompl_parc::TimedPath ompl_parc::PrioritizedSTRRTSolver::planRobot(
         ->layOnGrid(*pdef->getSolutionPath()->as<og::PathGeometric>());
 }
 
-std::vector<std::size_t> ompl_parc::PrioritizedSTRRTSolver::unblockedOrder(
+std::optional<std::vector<std::size_t>> ompl_parc::PrioritizedSTRRTSolver::unblockedOrder(
     const MultiRobotSpaceInformation &si, const Subproblem &subproblem, const MultiRobotSpaceInformation &local,
-    const std::vector<std::size_t> &order, const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed) const
+    const std::vector<std::size_t> &order, const ob::PlannerTerminationCondition &ptc, Progress &progress) const
 {
     const auto &team = local.getRobots();
-    std::vector<TimedPath> alone(team.size());
-    for (std::size_t k = 0; k < team.size(); ++k)
+    progress.alone.resize(team.size());
+    for (std::size_t &k = progress.aloneDone; k < team.size(); ++k)
     {
         if (ptc)
-            return order;  // after the stop nobody is planned: the order no longer matters
-        alone[k] = planRobot(local.getCompositeSpace()->getRobotSpace(k),
-                             std::make_shared<DynamicObstacles>(team[k], si.getResolution()), subproblem.starts[k],
-                             subproblem.goals[k], 0, subproblem, ptc, mixSeed(seed, 0xa10e + k), settings_.lattice);
+            return std::nullopt;
+        progress.alone[k] =
+            planRobot(local.getCompositeSpace()->getRobotSpace(k),
+                      std::make_shared<DynamicObstacles>(team[k], si.getResolution()), subproblem.starts[k],
+                      subproblem.goals[k], 0, subproblem, ptc, mixSeed(*progress.seed, 0xa10e + k), settings_.lattice);
+        if (progress.alone[k].empty() && ptc)
+            return std::nullopt;  // cut while planning robot k, which is planned again next time
     }
-    return BlockingOrder(team, alone, subproblem.starts, subproblem.goals, ptc).order(order);
+    auto unblocked = BlockingOrder(team, progress.alone, subproblem.starts, subproblem.goals, ptc).order(order);
+    if (ptc)
+        return std::nullopt;  // some paths were not looked at
+    return unblocked;
 }
 
 std::optional<std::size_t> ompl_parc::PrioritizedSTRRTSolver::planInOrder(
     const MultiRobotSpaceInformation &si, const Subproblem &subproblem, const MultiRobotSpaceInformation &local,
-    const std::vector<std::size_t> &order, const Tracks &context, const ob::PlannerTerminationCondition &ptc,
-    std::uint_fast32_t seed, bool lattice, std::vector<TimedPath> &paths, bool &hopeless) const
+    const Tracks &context, const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed, bool lattice,
+    Progress &progress, bool &hopeless) const
 {
     const auto &team = local.getRobots();
     hopeless = true;
     // Each robot's bodies along its path are computed once and shared by the obstacles of all robots after it.
-    Tracks planned;
-    for (std::size_t k : order)
+    for (; progress.planned < progress.order.size(); ++progress.planned)
     {
+        const std::size_t k = progress.order[progress.planned];
         if (ptc)
             return k;
         auto obstacles = std::make_shared<DynamicObstacles>(team[k], si.getResolution());
-        for (const auto &track : planned)
+        for (const auto &track : progress.tracks)
             obstacles->addTrack(track);
         for (const auto &track : context)
             obstacles->addTrack(track);
@@ -158,21 +198,27 @@ std::optional<std::size_t> ompl_parc::PrioritizedSTRRTSolver::planInOrder(
             return k;
         }
         // The sample cap bounds each robot's ST-RRT iterations.
-        paths[k] = planRobot(local.getCompositeSpace()->getRobotSpace(k), obstacles, subproblem.starts[k],
-                             subproblem.goals[k], *hold, subproblem, ptc, mixSeed(seed, 0x57aa + k), lattice);
-        if (paths[k].empty())
+        TimedPath &path = progress.paths[k];
+        path = planRobot(local.getCompositeSpace()->getRobotSpace(k), obstacles, subproblem.starts[k],
+                         subproblem.goals[k], *hold, subproblem, ptc, mixSeed(seed, 0x57aa + k), lattice);
+        if (path.empty())
         {
             hopeless = static_cast<bool>(ptc);
             return k;
         }
-        if (planned.size() + 1 < team.size())  // a robot is planned after this one
+        if (progress.planned + 1 < team.size())  // a robot is planned after this one
         {
-            if (!DynamicObstacles::fits(paths[k]))
+            if (!DynamicObstacles::fits(path))
                 return k;  // too many timesteps to plan around (a resolution far above the usual)
-            planned.push_back(DynamicObstacles::computeTrack(*team[k], paths[k]));
+            progress.tracks.push_back(DynamicObstacles::computeTrack(*team[k], path));
         }
     }
     return std::nullopt;
+}
+
+std::unique_ptr<ompl_parc::SubproblemSolver::Memory> ompl_parc::PrioritizedSTRRTSolver::makeMemory() const
+{
+    return std::make_unique<Progress>();
 }
 
 bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
@@ -187,7 +233,29 @@ bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &
                                               const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed,
                                               Patch &patch, bool &retry) const
 {
+    Progress progress;
+    return solveFrom(si, subproblem, ptc, seed, patch, retry, progress);
+}
+
+bool ompl_parc::PrioritizedSTRRTSolver::resume(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
+                                               const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed,
+                                               Patch &patch, Memory *memory) const
+{
+    auto *progress = dynamic_cast<Progress *>(memory);
+    if (progress == nullptr)
+        return solve(si, subproblem, ptc, seed, patch);
+    bool retry = false;
+    return solveFrom(si, subproblem, ptc, seed, patch, retry, *progress);
+}
+
+bool ompl_parc::PrioritizedSTRRTSolver::solveFrom(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
+                                                  const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed,
+                                                  Patch &patch, bool &retry, Progress &progress) const
+{
     retry = false;
+    if (!progress.seed)
+        progress.seed = seed;
+    seed = *progress.seed;  // the first call's, so that later calls go on as that call would have
     const auto local = subproblem.createSpaceInformation(si, seed);
     if (!local)
         return false;
@@ -204,29 +272,48 @@ bool ompl_parc::PrioritizedSTRRTSolver::solve(const MultiRobotSpaceInformation &
             context.push_back(
                 DynamicObstacles::computeTrack(*si.getRobot(subproblem.others[o]), subproblem.otherPaths[o]));
         }
-    std::vector<TimedPath> paths(size);
-    std::vector<std::size_t> order = priorityOrder(size, seed);
-    if (settings_.unblock && size > 1)
-        order = unblockedOrder(si, subproblem, *local, order, ptc, seed);
+    if (!progress.started())
+    {
+        std::vector<std::size_t> order = priorityOrder(size, seed);
+        if (settings_.unblock && size > 1)
+        {
+            auto unblocked = unblockedOrder(si, subproblem, *local, order, ptc, progress);
+            if (!unblocked)
+                return false;  // cut: the robots planned alone so far stay in progress
+            order = std::move(*unblocked);
+        }
+        progress.start(std::move(order));
+    }
     // The first order draws with the solve's seed, each later one with fresh samples.
-    for (std::size_t attempt = 0;; ++attempt)
+    for (;; ++progress.attempt)
     {
         bool hopeless = false;
         // Orders alternate between the lattice and ST-RRT alone: the lattice's paths (waits where the others
         // let a robot get furthest) can wall in robots that ST-RRT's would not, and the other way round.
+        const std::size_t attempt = progress.attempt;
         const bool lattice = settings_.lattice && attempt % 2 == 0;
-        const auto failed = planInOrder(si, subproblem, *local, order, context, ptc,
-                                        attempt == 0 ? seed : mixSeed(seed, 0x9e0 + attempt), lattice, paths, hopeless);
+        const auto failed =
+            planInOrder(si, subproblem, *local, context, ptc, attempt == 0 ? seed : mixSeed(seed, 0x9e0 + attempt),
+                        lattice, progress, hopeless);
         if (!failed)
             break;
+        if (ptc)
+            return false;  // cut: the robots planned so far stay in progress for the next call
         retry = !hopeless;
+        auto &order = progress.order;
         if (hopeless || !settings_.promote || attempt + 1 >= size || order.front() == *failed)
+        {
+            progress = Progress();  // the next call starts over
             return false;
+        }
         order.erase(std::find(order.begin(), order.end(), *failed));
         order.insert(order.begin(), *failed);
+        progress.restartOrder();
     }
 
     // Robots that arrive early wait at their goal (held safely from their arrival on).
+    std::vector<TimedPath> paths = std::move(progress.paths);
+    progress = Progress();
     std::size_t arrival = 0;
     for (const auto &path : paths)
         arrival = std::max(arrival, path.getArrival());

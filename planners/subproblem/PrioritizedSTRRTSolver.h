@@ -83,30 +83,50 @@ namespace ompl_parc
                    const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed, Patch &patch,
                    bool &retry) const;
 
+        /** \brief A memory of where a solve stopped: the order it was trying (after unblocking and promotions),
+            that order's attempt and the robots of it already planned. */
+        std::unique_ptr<Memory> makeMemory() const override;
+
+        /** \brief solve(), going on with the order, attempt and planned robots where the last call with \e memory
+            was cut by its termination condition (a robot being planned then is planned again), so that calls cut
+            one after the other find the patch one uncut call would (the same seeds: those of the first call); the
+            robots planned alone for the unblocking order are kept too. A call that ends otherwise (solved, or every
+            order of its attempts failed) leaves \e memory fresh: the next call starts over with its own seed. */
+        bool resume(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
+                    const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed, Patch &patch,
+                    Memory *memory) const override;
+
         /** \brief The base order (positions in the team) of a solve with \e seed for a team of \e size: the given
             or shuffled one, before settings.unblock refines it and promotion changes it. */
         std::vector<std::size_t> priorityOrder(std::size_t size, std::uint_fast32_t seed) const;
 
       private:
         using Tracks = std::vector<std::shared_ptr<const BodyTrack>>;
+        class Progress;
+
+        /** \brief solve() and resume(): from \e progress, leaving in it where this call stopped. */
+        bool solveFrom(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
+                       const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed, Patch &patch,
+                       bool &retry, Progress &progress) const;
 
         /** \brief \e order refined by BlockingOrder from each robot of \e local's team planned alone (the path of
-            a robot that cannot be planned alone constrains nobody); \e order itself once \e ptc has fired. */
-        std::vector<std::size_t> unblockedOrder(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
-                                                const MultiRobotSpaceInformation &local,
-                                                const std::vector<std::size_t> &order,
-                                                const ompl::base::PlannerTerminationCondition &ptc,
-                                                std::uint_fast32_t seed) const;
+            a robot that cannot be planned alone constrains nobody), planned into \e progress from the first robot
+            not yet planned there; none if \e ptc fired first. */
+        std::optional<std::vector<std::size_t>> unblockedOrder(const MultiRobotSpaceInformation &si,
+                                                               const Subproblem &subproblem,
+                                                               const MultiRobotSpaceInformation &local,
+                                                               const std::vector<std::size_t> &order,
+                                                               const ompl::base::PlannerTerminationCondition &ptc,
+                                                               Progress &progress) const;
 
-        /** \brief Plans the robots of \e local's team in \e order into \e paths (robots planned earlier and
-            \e context as moving obstacles): the team position of the robot that could not be planned, or none if all
-            were; \e hopeless is set when planning again in another order cannot help (the stop, a start that is
-            not clear at timestep 0, or a path too long to plan around). */
+        /** \brief Plans the robots of \e local's team in \e progress's order into its paths, from its first robot not
+            yet planned on (robots planned earlier and \e context as moving obstacles): the team position of the robot
+            that could not be planned, or none if all were; \e hopeless is set when planning again in another order
+            cannot help (the stop, a start that is not clear at timestep 0, or a path too long to plan around). */
         std::optional<std::size_t> planInOrder(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
-                                               const MultiRobotSpaceInformation &local,
-                                               const std::vector<std::size_t> &order, const Tracks &context,
+                                               const MultiRobotSpaceInformation &local, const Tracks &context,
                                                const ompl::base::PlannerTerminationCondition &ptc,
-                                               std::uint_fast32_t seed, bool lattice, std::vector<TimedPath> &paths,
+                                               std::uint_fast32_t seed, bool lattice, Progress &progress,
                                                bool &hopeless) const;
 
         /** \brief One robot's timestep path from \e start to \e goal among \e obstacles, arriving no earlier
