@@ -25,9 +25,7 @@ namespace
         bool solve(const MultiRobotSpaceInformation &, const Subproblem &sub, const ob::PlannerTerminationCondition &,
                    std::uint_fast32_t, Patch &) const override
         {
-            std::lock_guard<std::mutex> lock(mutex_);
-            asked_.push_back(sub);
-            memories_.push_back(0);
+            record(sub, 0);
             return false;
         }
         /** \brief A memory numbered from 1 in the order they are made. */
@@ -42,14 +40,18 @@ namespace
             std::lock_guard<std::mutex> lock(mutex_);
             return std::make_unique<Numbered>(++made_);
         }
-        bool resume(const MultiRobotSpaceInformation &si, const Subproblem &sub,
-                    const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed, Patch &patch,
-                    Memory *memory) const override
+        bool resume(const MultiRobotSpaceInformation &, const Subproblem &sub, const ob::PlannerTerminationCondition &,
+                    std::uint_fast32_t, Patch &, Memory *memory) const override
         {
-            const bool solved = solve(si, sub, ptc, seed, patch);
+            record(sub, memory == nullptr ? 0 : dynamic_cast<Numbered &>(*memory).number_);
+            return false;
+        }
+        /** \brief A call and its memory, under one lock (windows may be repaired concurrently). */
+        void record(const Subproblem &sub, int memory) const
+        {
             std::lock_guard<std::mutex> lock(mutex_);
-            memories_.back() = memory == nullptr ? 0 : dynamic_cast<Numbered &>(*memory).number_;
-            return solved;
+            asked_.push_back(sub);
+            memories_.push_back(memory);
         }
         mutable std::mutex mutex_;
         mutable std::vector<Subproblem> asked_;

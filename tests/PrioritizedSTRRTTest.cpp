@@ -340,45 +340,58 @@ namespace
     }
 }  // namespace
 
-TEST(PrioritizedSTRRTSolver, CallsCutOneAfterAnotherFindTheUncutPatch)
+TEST(PrioritizedSTRRTSolver, CallsCutOneAfterAnotherGoOnWhereTheyStopped)
 {
-    // 16 robots in generated rooms: the lattice, the unblocking order and promotions (ARC's global rounds cut such
-    // solves by time).
+    // 16 robots in generated rooms (ARC's global rounds cut such solves by time): with the lattice, the unblocking
+    // order and promotions, where calls cut one after the other find the uncut call's patch; and with ST-RRT planning
+    // every robot in a shuffled order, where a resumed call draws its space samples afresh but still gets there.
     const auto problem = scenarios::generateFamilyInstance("rooms", 16, 1);
     const auto &si = *problem.getSpaceInformation();
     const auto sub = wholeProblem(problem);
-    const PrioritizedSTRRTSolver solver;
-    std::size_t count = 0;
-    Patch uncut;
-    ASSERT_TRUE(solver.solve(si, sub, afterEvaluations(std::nullopt, count), 7, uncut));
-    const std::size_t total = count;
-    ASSERT_TRUE(validatePatch(problem, sub, uncut).valid);
-
-    // Each call may do a quarter of that: starting over, no call gets there; going on, a few do, and they find the
-    // same patch (the robots planned before a cut are kept, alone for the order or in it; the one being planned is
-    // planned again with the same seed).
-    const std::size_t budget = total / 4;
-    Patch patch;
-    EXPECT_FALSE(solver.solve(si, sub, afterEvaluations(budget, count), 7, patch));
-    EXPECT_FALSE(solver.resume(si, sub, afterEvaluations(budget, count), 7, patch, nullptr)) << "no memory: solve()";
-    const auto memory = solver.makeMemory();
-    ASSERT_NE(memory, nullptr);
-    unsigned int calls = 0;
-    bool solved = false;
-    while (!solved && calls < 20)
+    PrioritizedSTRRTSettings sampled;
+    sampled.lattice = false;
+    sampled.shuffle = true;
+    for (const auto &settings : {PrioritizedSTRRTSettings(), sampled})
     {
-        ++calls;
-        solved = solver.resume(si, sub, afterEvaluations(budget, count), 7 + calls, patch, memory.get());
-    }
-    ASSERT_TRUE(solved) << "in " << calls << " calls";
-    EXPECT_GE(calls, 4u);
-    EXPECT_EQ(patch.paths, uncut.paths) << "the first call's seed decides, as in one uncut call";
+        SCOPED_TRACE(settings.lattice ? "lattice" : "ST-RRT, shuffled");
+        const PrioritizedSTRRTSolver solver(settings);
+        const std::size_t unlimited = 50000000;  // far above what either takes
+        std::size_t count = 0;
+        Patch uncut;
+        ASSERT_TRUE(solver.solve(si, sub, afterEvaluations(unlimited, count), 7, uncut));
+        const std::size_t total = count;
+        ASSERT_TRUE(validatePatch(problem, sub, uncut).valid);
 
-    // A solved call leaves the memory fresh: the next call is a whole solve of its own (here uncut, seed 7).
-    Patch again;
-    ASSERT_TRUE(solver.resume(si, sub, afterEvaluations(std::nullopt, count), 7, again, memory.get()));
-    EXPECT_EQ(again.paths, uncut.paths);
-    EXPECT_EQ(count, total);
+        // Each call may do a part of that: starting over, no call gets there; going on, a few do, whatever seeds the
+        // later calls bring (the robots planned before a cut are kept, alone for the order or in it; the one being
+        // planned is planned again). A robot planned again starts over: ST-RRT's hardest robot alone takes over a
+        // third of the sampled solve, so its calls get half.
+        const unsigned int parts = settings.lattice ? 4 : 2;
+        const std::size_t budget = total / parts;
+        Patch patch;
+        EXPECT_FALSE(solver.solve(si, sub, afterEvaluations(budget, count), 7, patch));
+        EXPECT_FALSE(solver.resume(si, sub, afterEvaluations(budget, count), 7, patch, nullptr)) << "no memory";
+        const auto memory = solver.makeMemory();
+        ASSERT_NE(memory, nullptr);
+        unsigned int calls = 0;
+        bool solved = false;
+        while (!solved && calls < 40)
+        {
+            solved = solver.resume(si, sub, afterEvaluations(budget, count), 7 + 100 * calls, patch, memory.get());
+            ++calls;
+        }
+        ASSERT_TRUE(solved) << "in " << calls << " calls";
+        EXPECT_GE(calls, parts);
+        EXPECT_TRUE(validatePatch(problem, sub, patch).valid);
+        if (settings.lattice)
+            EXPECT_TRUE(patch.paths == uncut.paths) << "the first call's seed decides, as in one uncut call";
+
+        // A solved call leaves the memory fresh: the next call is a whole solve of its own (here uncut, seed 7).
+        Patch again;
+        ASSERT_TRUE(solver.resume(si, sub, afterEvaluations(unlimited, count), 7, again, memory.get()));
+        EXPECT_TRUE(again.paths == uncut.paths);
+        EXPECT_EQ(count, total);
+    }
 }
 
 TEST(PrioritizedSTRRT, RejectsBadInputsClearly)

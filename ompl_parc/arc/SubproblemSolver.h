@@ -37,8 +37,9 @@ namespace ompl_parc
                            Patch &patch) const = 0;
 
         /** \brief What a solver keeps from one call to the next on the same problem. ARC's global rounds give each
-            call a time cap that doubles (ConflictResolver): a solver that starts over in every round redoes what
-            the rounds before it did, so a problem that needs T seconds costs about 2T before it is solved. */
+            call a time cap as long as the solve has run so far (ConflictResolver): a solver that starts over in
+            every round redoes what the rounds before it did, so a problem that needs T seconds in one call costs
+            about twice that, or more, before it is solved. */
         class Memory
         {
           public:

@@ -253,9 +253,7 @@ bool ompl_parc::PrioritizedSTRRTSolver::solveFrom(const MultiRobotSpaceInformati
                                                   Patch &patch, bool &retry, Progress &progress) const
 {
     retry = false;
-    if (!progress.seed)
-        progress.seed = seed;
-    seed = *progress.seed;  // the first call's, so that later calls go on as that call would have
+    seed = progress.seed.value_or(seed);  // the first call's, so that later calls go on as that call would have
     const auto local = subproblem.createSpaceInformation(si, seed);
     if (!local)
         return false;
@@ -272,6 +270,7 @@ bool ompl_parc::PrioritizedSTRRTSolver::solveFrom(const MultiRobotSpaceInformati
             context.push_back(
                 DynamicObstacles::computeTrack(*si.getRobot(subproblem.others[o]), subproblem.otherPaths[o]));
         }
+    progress.seed = seed;  // from here on, the solve has begun
     if (!progress.started())
     {
         std::vector<std::size_t> order = priorityOrder(size, seed);

@@ -88,10 +88,12 @@ namespace ompl_parc
         std::unique_ptr<Memory> makeMemory() const override;
 
         /** \brief solve(), going on with the order, attempt and planned robots where the last call with \e memory
-            was cut by its termination condition (a robot being planned then is planned again), so that calls cut
-            one after the other find the patch one uncut call would (the same seeds: those of the first call); the
-            robots planned alone for the unblocking order are kept too. A call that ends otherwise (solved, or every
-            order of its attempts failed) leaves \e memory fresh: the next call starts over with its own seed. */
+            was cut by its termination condition (a robot being planned then is planned again), with the first
+            call's seed; the robots planned alone for the unblocking order are kept too. Where the lattice plans every
+            robot, calls cut one after the other find the patch one uncut call would; an ST-RRT run draws its space
+            samples from the call's own local space, so a resumed call's ST-RRT runs draw afresh. A call that ends
+            otherwise (solved, or every order of its attempts failed) leaves \e memory fresh: the next call starts
+            over with its own seed. */
         bool resume(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
                     const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed, Patch &patch,
                     Memory *memory) const override;
