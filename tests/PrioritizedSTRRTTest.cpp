@@ -331,12 +331,12 @@ TEST(PrioritizedSTRRTSolver, SameSeedGivesTheSamePatch)
 
 namespace
 {
-    /** A termination condition that fires at its (\e budget + 1)-th evaluation (none: never) and counts them in
+    /** A termination condition that fires at its (\e budget + 1)-th evaluation and counts them in
         \e count: a cut at the same point of the work on every run, whatever the machine's speed. */
-    ob::PlannerTerminationCondition afterEvaluations(std::optional<std::size_t> budget, std::size_t &count)
+    ob::PlannerTerminationCondition afterEvaluations(std::size_t budget, std::size_t &count)
     {
         count = 0;
-        return ob::PlannerTerminationCondition([budget, &count] { return ++count > budget.value_or(SIZE_MAX); });
+        return ob::PlannerTerminationCondition([budget, &count] { return ++count > budget; });
     }
 }  // namespace
 
