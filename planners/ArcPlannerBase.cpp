@@ -51,6 +51,8 @@ ompl_parc::ArcPlannerBase::ArcPlannerBase(const ob::SpaceInformationPtr &si, con
                               "linear,exponential");
     declareParam<double>("growth_step", this, &ArcPlannerBase::setGrowthStep, &ArcPlannerBase::getGrowthStep,
                          "0.:1.:1000.");
+    declareParam<double>("min_window_growth", this, &ArcPlannerBase::setMinWindowGrowth,
+                         &ArcPlannerBase::getMinWindowGrowth, "1.:0.05:4.");
     declareParam<unsigned int>("endpoint_step", this, &ArcPlannerBase::setEndpointStep,
                                &ArcPlannerBase::getEndpointStep, "1:10:1000");
     declareParam<double>("bound_margin", this, &ArcPlannerBase::setBoundMargin, &ArcPlannerBase::getBoundMargin,
@@ -100,6 +102,14 @@ void ompl_parc::ArcPlannerBase::setGrowthStep(double step)
         throw ompl::Exception(getName(), "growth_step must be positive");
     options_.settings.growthStep = step;
     options_.settings.explicitFields |= ArcSettings::GROWTH_STEP;
+}
+
+void ompl_parc::ArcPlannerBase::setMinWindowGrowth(double factor)
+{
+    if (!(factor >= 1. && factor <= 1e6))
+        throw ompl::Exception(getName(), "min_window_growth must be between 1 and 1e6");
+    options_.settings.minWindowGrowth = factor;
+    options_.settings.explicitFields |= ArcSettings::MIN_WINDOW_GROWTH;
 }
 
 void ompl_parc::ArcPlannerBase::setEndpointStep(unsigned int step)

@@ -64,6 +64,9 @@ namespace ompl_parc
         std::string getGrowth() const { return ArcSettings::toString(getSettings().growth); }
         void setGrowthStep(double step);
         double getGrowthStep() const { return getSettings().growthStep; }
+        /** \brief ArcSettings::minWindowGrowth; at least 1 (1: every window of the schedule is tried). */
+        void setMinWindowGrowth(double factor);
+        double getMinWindowGrowth() const { return getSettings().minWindowGrowth; }
         void setEndpointStep(unsigned int step);
         unsigned int getEndpointStep() const { return getSettings().endpointStep; }
         void setBoundMargin(double margin);

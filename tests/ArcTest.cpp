@@ -129,13 +129,18 @@ TEST(Arc, ParametersAreDeclaredAndStatisticsReported)
     const auto problem = scenarios::createPlanarCross(4);
     ARC arc(problem.getSpaceInformation());
     auto &params = arc.params();
-    for (const char *name :
-         {"profile", "window", "growth", "growth_step", "endpoint_step", "bound_margin", "min_bound_range",
-          "sample_cap", "solvers", "simplify_initial", "straight_initial", "shorten_patches", "smooth", "seed"})
+    for (const char *name : {"profile", "window", "growth", "growth_step", "min_window_growth", "endpoint_step",
+                             "bound_margin", "min_bound_range", "sample_cap", "solvers", "simplify_initial",
+                             "straight_initial", "shorten_patches", "smooth", "seed"})
         EXPECT_TRUE(params.hasParam(name)) << name;
     EXPECT_TRUE(params.setParam("profile", "planar"));
     EXPECT_EQ(arc.getWindow(), 100u);
     EXPECT_EQ(arc.getGrowth(), "exponential");
+    EXPECT_EQ(arc.getMinWindowGrowth(), 1.);
+    EXPECT_TRUE(params.setParam("min_window_growth", "1.25"));
+    EXPECT_EQ(arc.getMinWindowGrowth(), 1.25);
+    EXPECT_THROW(params.setParam("min_window_growth", "0.5"), ompl::Exception);  // below 1: windows could shrink
+    EXPECT_EQ(arc.getMinWindowGrowth(), 1.25);
     EXPECT_TRUE(params.setParam("window", "80"));
     EXPECT_EQ(arc.getWindow(), 80u);
     EXPECT_TRUE(params.setParam("seed", "5"));
@@ -149,6 +154,7 @@ TEST(Arc, ParametersAreDeclaredAndStatisticsReported)
     EXPECT_TRUE(data.properties.count("resolution_cpu_time REAL"));
     EXPECT_THROW(arc.setProfile("humanoid"), ompl::Exception);
     EXPECT_THROW(arc.setWindow(0), ompl::Exception);
+    EXPECT_THROW(arc.setMinWindowGrowth(std::nan("")), ompl::Exception);
 }
 
 TEST(Arc, ProfileAndExplicitParametersInAnyOrder)

@@ -189,6 +189,52 @@ TEST_F(HeadOn, FailedWindowsGrowUntilTheGlobalProblemOfTheTeamThenOfAllRobots)
         EXPECT_EQ(s.robots, pair);
 }
 
+TEST_F(HeadOn, WindowsHardlyWiderThanTheFailedOneAreSkipped)
+{
+    // The authors' planar schedule: half-widths 100 + ceil(1.05 * 2^(k-1)) = 100, 102, 103, 105, 109, 117, 134, 168,
+    // 235, 369, 638, 1176, 2251. The first five grow the window [1180, 1380] by 2 to 34 timesteps: nearly the same
+    // subproblem again, tried once more (102) and then skipped. A window at least 1.25 times as long as the first of
+    // the size being tried starts a new size.
+    ArcSettings settings = ArcSettings::profile("planar");
+    settings.minWindowGrowth = 1.25;
+    auto solver = std::make_shared<RecordingSolver>();
+    ConflictResolver resolver(*problem.getSpaceInformation(), settings, {solver});
+    const auto ptc = ob::PlannerTerminationCondition(
+        [&]
+        {
+            std::lock_guard<std::mutex> lock(solver->mutex_);
+            return !solver->asked_.empty() && solver->asked_.back().bounds.empty();  // the global problem was asked
+        });
+    ResolveTrace trace;
+    EXPECT_FALSE(resolver.resolve(plan, {0, 1}, 1280, ptc, 1, &trace).has_value());
+    std::vector<std::size_t> starts;
+    for (const auto &s : solver->asked_)
+        starts.push_back(s.windowStart);
+    // Half-widths 100, 102, 134, 168, 235, 369, 638, 1176; then 2251 covers [0, 2560]: the global problem.
+    EXPECT_EQ(starts, (std::vector<std::size_t>{1180, 1178, 1146, 1112, 1045, 911, 642, 104, 0}));
+    EXPECT_EQ(solver->asked_.back().windowEnd, 2560u);
+    EXPECT_EQ(trace.expansions, 7u);
+
+    // With a least growth of 1 (every profile's default) every window of the schedule is tried.
+    settings.minWindowGrowth = 1.;
+    auto every = std::make_shared<RecordingSolver>();
+    ConflictResolver everyResolver(*problem.getSpaceInformation(), settings, {every});
+    EXPECT_FALSE(everyResolver
+                     .resolve(plan, {0, 1}, 1280,
+                              ob::PlannerTerminationCondition(
+                                  [&]
+                                  {
+                                      std::lock_guard<std::mutex> lock(every->mutex_);
+                                      return every->asked_.size() >= 6;
+                                  }),
+                              1)
+                     .has_value());
+    starts.clear();
+    for (const auto &s : every->asked_)
+        starts.push_back(s.windowStart);
+    EXPECT_EQ(starts, (std::vector<std::size_t>{1180, 1178, 1177, 1175, 1171, 1163}));
+}
+
 namespace
 {
     /** A solver that never succeeds and only returns when its termination condition fires. */
@@ -270,6 +316,7 @@ TEST(ArcSettings, GrowthSchedulesAndProfiles)
     EXPECT_EQ(planar.halfWidth(0), 100u);
     EXPECT_EQ(planar.halfWidth(1), 102u);  // 100 + ceil(1.05)
     EXPECT_EQ(planar.halfWidth(5), 117u);  // 100 + ceil(1.05 * 16)
+    EXPECT_EQ(ArcSettings::profile("panda").minWindowGrowth, 1.);  // every window: opt-in only (README)
     EXPECT_THROW(ArcSettings::profile("humanoid"), ompl::Exception);
     EXPECT_THROW(ArcSettings::growthFromString("cubic"), ompl::Exception);
     EXPECT_THROW(ArcSettings::solversFromString("magic"), ompl::Exception);

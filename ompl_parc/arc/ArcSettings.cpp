@@ -34,6 +34,7 @@ void ompl_parc::ArcSettings::applyProfile(const std::string &name)
     take(WINDOW, window, p.window);
     take(GROWTH, growth, p.growth);
     take(GROWTH_STEP, growthStep, p.growthStep);
+    take(MIN_WINDOW_GROWTH, minWindowGrowth, p.minWindowGrowth);
     take(ENDPOINT_STEP, endpointStep, p.endpointStep);
     take(BOUND_MARGIN, boundMargin, p.boundMargin);
     take(MIN_BOUND_RANGE, minBoundRange, p.minBoundRange);

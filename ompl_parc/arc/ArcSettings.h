@@ -31,6 +31,15 @@ namespace ompl_parc
         unsigned int window{200};
         Growth growth{Growth::LINEAR};
         double growthStep{200.};
+        /** \brief Above 1: windows less than this factor longer than the first of their size are tried
+            ConflictResolver::WINDOW_TRIES times, the schedule's others skipped. The authors' exponential schedule
+            starts at +1, +2, +4, ... timesteps, and a window widened at an endpoint past the schedule stays the same
+            for many steps: nearly the same subproblem again, which ARC retried for most of its budget on the Panda
+            cells it failed. 1 (every profile's default): every window of the schedule is tried, and one equal to the
+            failed window goes global. Opt-in: 1.25 with composite RRT-Connect alone solved 19/20 Panda cells at 16
+            robots against 9-10/20, but lost Panda Cage 16 task 4, where the fifth try of one window is what succeeds
+            (README). */
+        double minWindowGrowth{1.};
         /** \brief Timesteps by which an invalid local start (goal) side is widened until it is valid. */
         unsigned int endpointStep{200};
         /** \brief Local bounds: the window's path bounding box widened by margin x its size on each side,
@@ -69,7 +78,8 @@ namespace ompl_parc
             SOLVERS = 1u << 7,
             SIMPLIFY_INITIAL = 1u << 8,
             SHORTEN_PATCHES = 1u << 9,
-            STRAIGHT_INITIAL = 1u << 10
+            STRAIGHT_INITIAL = 1u << 10,
+            MIN_WINDOW_GROWTH = 1u << 11
         };
         /** \brief The fields set one by one (planner parameters): a profile applied later keeps them, so a
             profile and explicit parameters give the same settings in any order (OMPL's ParamSet applies a

@@ -98,22 +98,39 @@ void ompl_parc::ConflictResolver::fillContext(const MultiRobotPlan &plan, Subpro
         sub.fillContext(si_, plan);
 }
 
+std::pair<std::size_t, std::size_t> ompl_parc::ConflictResolver::window(const MultiRobotPlan &plan,
+                                                                        const std::vector<std::size_t> &team,
+                                                                        std::size_t timestep,
+                                                                        unsigned int attempt) const
+{
+    const std::size_t latest = latestArrival(plan, team), h = settings_.halfWidth(attempt);
+    std::size_t start = timestep > h ? timestep - h : 0, end = std::min(timestep + h, latest);
+    // Endpoints first: widen an invalid side until the team is clear there (always true at 0 and at the end).
+    const std::size_t step = std::max(1u, settings_.endpointStep);
+    // (Millions of steps at a resolution far above the usual: the search stops with the planning.)
+    while (start > 0 && !teamClear(plan, team, start) && !StopSignal::raised())
+        start = start > step ? start - step : 0;
+    while (end < latest && !teamClear(plan, team, end) && !StopSignal::raised())
+        end = std::min(end + step, latest);
+    return {start, end};
+}
+
 ompl_parc::Subproblem ompl_parc::ConflictResolver::makeSubproblem(const MultiRobotPlan &plan,
                                                                   const std::vector<std::size_t> &team,
                                                                   std::size_t timestep, unsigned int attempt) const
 {
+    const auto [start, end] = window(plan, team, timestep, attempt);
+    return makeWindow(plan, team, start, end);
+}
+
+ompl_parc::Subproblem ompl_parc::ConflictResolver::makeWindow(const MultiRobotPlan &plan,
+                                                              const std::vector<std::size_t> &team, std::size_t start,
+                                                              std::size_t end) const
+{
     Subproblem sub;
     sub.robots = team;
-    const std::size_t latest = latestArrival(plan, team), h = settings_.halfWidth(attempt);
-    sub.windowStart = timestep > h ? timestep - h : 0;
-    sub.windowEnd = std::min(timestep + h, latest);
-    // Endpoints first: widen an invalid side until the team is clear there (always true at 0 and at the end).
-    const std::size_t step = std::max(1u, settings_.endpointStep);
-    // (Millions of steps at a resolution far above the usual: the search stops with the planning.)
-    while (sub.windowStart > 0 && !teamClear(plan, team, sub.windowStart) && !StopSignal::raised())
-        sub.windowStart = sub.windowStart > step ? sub.windowStart - step : 0;
-    while (sub.windowEnd < latest && !teamClear(plan, team, sub.windowEnd) && !StopSignal::raised())
-        sub.windowEnd = std::min(sub.windowEnd + step, latest);
+    sub.windowStart = start;
+    sub.windowEnd = end;
     fillEndpoints(plan, sub);
     fillBounds(plan, sub);
     fillContext(plan, sub);
@@ -145,6 +162,8 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
     Repair repair;
     std::vector<std::size_t> members = team;
     std::size_t lastStart = 0, lastEnd = 0;
+    double sizeLength = 0.;  // the length of the first window of the size being tried
+    unsigned int triesOfSize = 0;
     // The global rounds of one team are one problem (only the sample cap grows): each solver goes on from where its
     // last round's call was cut instead of starting over (SubproblemSolver::resume).
     std::vector<std::unique_ptr<SubproblemSolver::Memory>> memories(hierarchy_.size());
@@ -155,19 +174,44 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
     };
     for (unsigned int k = 0; !ptc; ++k)
     {
-        Subproblem sub =
-            repair.global ? makeGlobal(plan, members, t.globalRounds) : makeSubproblem(plan, members, timestep, k);
-        const bool unchanged = k > 0 && sub.windowStart == lastStart && sub.windowEnd == lastEnd;
-        if (!repair.global && (unchanged || (sub.windowStart == 0 && sub.windowEnd == latestArrival(plan, team))))
+        Subproblem sub;
+        if (repair.global)
+            sub = makeGlobal(plan, members, t.globalRounds);
+        else
         {
-            repair.global = true;
-            sub = makeGlobal(plan, team, 0);
-            forget();
+            const auto [start, end] = window(plan, team, timestep, k);
+            const bool skipping = settings_.minWindowGrowth > 1.;
+            // The schedule stopped growing, the window covers the team's whole plan or, when every window is tried,
+            // it is the failed one again: the global problem.
+            const bool stuck = k > 0 && (settings_.halfWidth(k) <= settings_.halfWidth(k - 1) ||
+                                         (!skipping && start == lastStart && end == lastEnd));
+            // A window hardly longer than the first of its size poses nearly the same subproblem again: tried once
+            // more (a fresh seed), then skipped for a wider one.
+            const bool sameSize =
+                skipping && k > 0 && static_cast<double>(end - start) < settings_.minWindowGrowth * sizeLength;
+            if (stuck || (start == 0 && end == latestArrival(plan, team)))
+            {
+                repair.global = true;
+                sub = makeGlobal(plan, team, 0);
+                forget();
+            }
+            else if (sameSize && triesOfSize >= WINDOW_TRIES)
+                continue;
+            else
+            {
+                if (!sameSize)
+                {
+                    sizeLength = static_cast<double>(end - start);
+                    triesOfSize = 0;
+                }
+                ++triesOfSize;
+                sub = makeWindow(plan, team, start, end);
+                t.expansions += k > 0 ? 1 : 0;
+            }
         }
         t.globalRounds += repair.global ? 1 : 0;
         lastStart = sub.windowStart;
         lastEnd = sub.windowEnd;
-        t.expansions = k;
         for (std::size_t s = 0; s < hierarchy_.size(); ++s)
         {
             const auto &solver = hierarchy_[s];

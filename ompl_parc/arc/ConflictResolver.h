@@ -8,6 +8,7 @@
 #include <ompl/util/Time.h>
 
 #include <optional>
+#include <utility>
 
 namespace ompl_parc
 {
@@ -33,18 +34,20 @@ namespace ompl_parc
 
         The window [t - h, t + h] is clipped to [0, latest arrival of the team]; an invalid local start
         (goal) side is first widened by ArcSettings::endpointStep until the team's states there are
-        collision-free; local bounds follow ArcSettings. When a grown window equals the previous one, or
-        covers the team's whole plan, the attempt becomes the global problem (global starts and goals, whole
-        spaces), retried with fresh seeds until success or termination. When a solver of the hierarchy plans around
-        the other robots (PP-ST-RRT) and the team's global problem has failed once, the next rounds plan every robot
-        of the problem (the paper's global problem): the others' fixed paths may wall the team in for good. Such a
-        repair covers every robot (P-ARC splices it first and drops the batch's other repairs, RepairLoop). Every
+        collision-free; local bounds follow ArcSettings. When ArcSettings::minWindowGrowth exceeds 1, windows less
+        than that factor longer than the first of their size are tried WINDOW_TRIES times and the schedule's others
+        skipped. When the schedule stops growing (ArcSettings::halfWidth), the window covers the team's whole plan or,
+        without skipping, equals the failed one, the attempt becomes the global problem (global starts and goals,
+        whole spaces), retried with fresh seeds until success or termination. When a solver of the hierarchy plans
+        around the other robots (PP-ST-RRT) and the team's global problem has failed once, the next rounds plan every
+        robot of the problem (the paper's global problem): the others' fixed paths may wall the team in for good. Such
+        a repair covers every robot (P-ARC splices it first and drops the batch's other repairs, RepairLoop). Every
         call is bounded: a local window by ArcSettings::sampleCap iterations, global round g by sampleCap x 2^g (a
         sample cap of 0 lifts these caps); and every call, whatever the iterations cost, by time: it may run as long
         as the solve had run before it started (at least MIN_CALL_SECONDS), since the resolver was made
         (RepairLoop::configure, at each solve). So no call ever holds more than half of the time spent when the solve
-       stops, while the effort per call still grows geometrically. Only calls that reach the time cap make a seeded
-       solve's result depend on the machine's speed. resolve() only reads the plan, so P-ARC runs several at once. */
+        stops, while the effort per call still grows geometrically. Only calls that reach the time cap make a seeded
+        solve's result depend on the machine's speed. resolve() only reads the plan, so P-ARC runs several at once. */
     class ConflictResolver
     {
       public:
@@ -53,6 +56,12 @@ namespace ompl_parc
 
         /** \brief The least time cap of one solver call, in seconds. */
         static constexpr double MIN_CALL_SECONDS = 0.05;
+
+        /** \brief How often windows of one size (less than ArcSettings::minWindowGrowth times as long as the first of
+            them) are tried when that factor exceeds 1: a fresh seed sometimes finds what the first try missed (with
+            the defaults Panda Cage 16 task 4 needs up to five), while more tries of one size held the budgets of the
+            Panda cells ARC failed (README). */
+        static constexpr unsigned int WINDOW_TRIES = 2;
 
         ConflictResolver(const MultiRobotSpaceInformation &si, ArcSettings settings,
                          std::vector<SubproblemSolverPtr> hierarchy);
@@ -74,6 +83,13 @@ namespace ompl_parc
         const ArcSettings &getSettings() const { return settings_; }
 
       private:
+        /** \brief The window [start, end] of attempt \e attempt: [t - h, t + h] clipped to the team's plan, each
+            invalid side widened by ArcSettings::endpointStep until the team is clear there. */
+        std::pair<std::size_t, std::size_t> window(const MultiRobotPlan &plan, const std::vector<std::size_t> &team,
+                                                   std::size_t timestep, unsigned int attempt) const;
+        /** \brief The subproblem of \e team over [start, end]: endpoints, bounds, context and the window's cap. */
+        Subproblem makeWindow(const MultiRobotPlan &plan, const std::vector<std::size_t> &team, std::size_t start,
+                              std::size_t end) const;
         bool teamClear(const MultiRobotPlan &plan, const std::vector<std::size_t> &team, std::size_t timestep) const;
         void fillEndpoints(const MultiRobotPlan &plan, Subproblem &sub) const;
         void fillBounds(const MultiRobotPlan &plan, Subproblem &sub) const;
