@@ -189,7 +189,7 @@ TEST_F(HeadOn, FailedWindowsGrowUntilTheGlobalProblemOfTheTeamThenOfAllRobots)
         EXPECT_EQ(s.robots, pair);
 }
 
-TEST_F(HeadOn, WindowsHardlyWiderThanTheFailedOneAreSkipped)
+TEST_F(HeadOn, WindowsHardlyWiderThanTheFirstOfTheirSizeAreTriedTwiceThenSkipped)
 {
     // The authors' planar schedule: half-widths 100 + ceil(1.05 * 2^(k-1)) = 100, 102, 103, 105, 109, 117, 134, 168,
     // 235, 369, 638, 1176, 2251. The first five grow the window [1180, 1380] by 2 to 34 timesteps: nearly the same
