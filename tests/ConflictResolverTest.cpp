@@ -189,7 +189,28 @@ TEST_F(HeadOn, FailedWindowsGrowUntilTheGlobalProblemOfTheTeamThenOfAllRobots)
         EXPECT_EQ(s.robots, pair);
 }
 
-TEST_F(HeadOn, WindowsHardlyWiderThanTheFirstOfTheirSizeAreTriedTwiceThenSkipped)
+namespace
+{
+    /** A RecordingSolver whose calls take time: \e window on a window, \e global on the global problem. */
+    class SlowSolver : public RecordingSolver
+    {
+      public:
+        SlowSolver(std::chrono::milliseconds window, std::chrono::milliseconds global)
+            : window_(window), global_(global)
+        {
+        }
+        bool resume(const MultiRobotSpaceInformation &si, const Subproblem &sub,
+                    const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed, Patch &patch,
+                    Memory *memory) const override
+        {
+            std::this_thread::sleep_for(sub.bounds.empty() ? global_ : window_);
+            return RecordingSolver::resume(si, sub, ptc, seed, patch, memory);
+        }
+        const std::chrono::milliseconds window_, global_;
+    };
+}  // namespace
+
+TEST_F(HeadOn, WindowsHardlyWiderThanTheFirstOfTheirSizeAreTriedTwiceThenSkippedAndTheScheduleCycles)
 {
     // The authors' planar schedule: half-widths 100 + ceil(1.05 * 2^(k-1)) = 100, 102, 103, 105, 109, 117, 134, 168,
     // 235, 369, 638, 1176, 2251. The first five grow the window [1180, 1380] by 2 to 34 timesteps: nearly the same
@@ -197,25 +218,40 @@ TEST_F(HeadOn, WindowsHardlyWiderThanTheFirstOfTheirSizeAreTriedTwiceThenSkipped
     // the size being tried starts a new size.
     ArcSettings settings = ArcSettings::profile("planar");
     settings.minWindowGrowth = 1.25;
-    auto solver = std::make_shared<RecordingSolver>();
+    // Global rounds of 50 ms, windows of no time: the later passes never have had more time than the global rounds.
+    auto solver = std::make_shared<SlowSolver>(std::chrono::milliseconds(0), std::chrono::milliseconds(50));
     ConflictResolver resolver(*problem.getSpaceInformation(), settings, {solver});
     const auto ptc = ob::PlannerTerminationCondition(
         [&]
         {
             std::lock_guard<std::mutex> lock(solver->mutex_);
-            return !solver->asked_.empty() && solver->asked_.back().bounds.empty();  // the global problem was asked
+            // The first window (start 1180) asked a third time.
+            return std::count_if(solver->asked_.begin(), solver->asked_.end(),
+                                 [](const Subproblem &s) { return s.windowStart == 1180; }) == 3;
         });
     ResolveTrace trace;
     EXPECT_FALSE(resolver.resolve(plan, {0, 1}, 1280, ptc, 1, &trace).has_value());
     std::vector<std::size_t> starts;
     for (const auto &s : solver->asked_)
         starts.push_back(s.windowStart);
-    // Half-widths 100, 102, 134, 168, 235, 369, 638, 1176; then 2251 covers [0, 2560]: the global problem.
-    EXPECT_EQ(starts, (std::vector<std::size_t>{1180, 1178, 1146, 1112, 1045, 911, 642, 104, 0}));
-    EXPECT_EQ(solver->asked_.back().windowEnd, 2560u);
-    EXPECT_EQ(trace.expansions, 7u);
+    // Half-widths 100, 102, 134, 168, 235, 369, 638, 1176; then 2251 covers [0, 2560]: the global problem. It failed:
+    // the schedule starts over (fresh seeds) and reaches the global problem again, whose cap has doubled; and again.
+    const std::vector<std::size_t> cycle{1180, 1178, 1146, 1112, 1045, 911, 642, 104, 0};
+    std::vector<std::size_t> expected = cycle;
+    expected.insert(expected.end(), cycle.begin(), cycle.end());
+    expected.push_back(1180);
+    EXPECT_EQ(starts, expected);
+    ASSERT_EQ(solver->asked_.size(), 19u);
+    EXPECT_EQ(solver->asked_[8].windowEnd, 2560u);
+    EXPECT_EQ(solver->asked_[8].sampleCap, settings.sampleCap);
+    EXPECT_EQ(solver->asked_[17].sampleCap, 2 * settings.sampleCap);
+    EXPECT_EQ(solver->memories_[17], solver->memories_[8]);  // the global problem goes on where it stopped
+    EXPECT_NE(solver->memories_[8], 0);
+    EXPECT_EQ(trace.expansions, 14u);
+    EXPECT_EQ(trace.globalRounds, 2u);
+    EXPECT_EQ(trace.passes, 2u);
 
-    // With a least growth of 1 (every profile's default) every window of the schedule is tried.
+    // With a least growth of 1 (the mobile and planar profiles') every window of the schedule is tried.
     settings.minWindowGrowth = 1.;
     auto every = std::make_shared<RecordingSolver>();
     ConflictResolver everyResolver(*problem.getSpaceInformation(), settings, {every});
@@ -233,6 +269,36 @@ TEST_F(HeadOn, WindowsHardlyWiderThanTheFirstOfTheirSizeAreTriedTwiceThenSkipped
     for (const auto &s : every->asked_)
         starts.push_back(s.windowStart);
     EXPECT_EQ(starts, (std::vector<std::size_t>{1180, 1178, 1177, 1175, 1171, 1163}));
+}
+
+TEST_F(HeadOn, LaterPassesOfTheScheduleGetNoMoreTimeThanTheGlobalRounds)
+{
+    // Passes of 8 windows of 20 ms and global rounds of 2 ms: after the second pass (160 ms of windows) the global
+    // problem gets rounds until it has had as much time, then the third pass starts.
+    ArcSettings settings = ArcSettings::profile("planar");
+    settings.minWindowGrowth = 1.25;
+    auto solver = std::make_shared<SlowSolver>(std::chrono::milliseconds(20), std::chrono::milliseconds(2));
+    ConflictResolver resolver(*problem.getSpaceInformation(), settings, {solver});
+    const auto ptc = ob::PlannerTerminationCondition(
+        [&]
+        {
+            std::lock_guard<std::mutex> lock(solver->mutex_);
+            // The first window (start 1180) asked a third time, or a safety stop.
+            return std::count_if(solver->asked_.begin(), solver->asked_.end(),
+                                 [](const Subproblem &s) { return s.windowStart == 1180; }) == 3 ||
+                   solver->asked_.size() > 2000;
+        });
+    ResolveTrace trace;
+    EXPECT_FALSE(resolver.resolve(plan, {0, 1}, 1280, ptc, 1, &trace).has_value());
+    ASSERT_GT(solver->asked_.size(), 18u);
+    EXPECT_LE(solver->asked_.size(), 2000u);
+    EXPECT_EQ(trace.passes, 2u);
+    // Asks 0-8 are the first pass (its global round last), 9-17 the second; then global rounds only, until the third.
+    const auto globals = std::count_if(solver->asked_.begin() + 17, solver->asked_.end() - 1,
+                                       [](const Subproblem &s) { return s.bounds.empty(); });
+    EXPECT_EQ(globals, static_cast<long>(solver->asked_.size()) - 18);
+    EXPECT_GE(globals, 3);  // 160 ms of windows against rounds of 2 ms: dozens, unless sleeps overran 25-fold
+    EXPECT_GE(trace.globalSeconds, 0.15);
 }
 
 namespace
@@ -316,7 +382,11 @@ TEST(ArcSettings, GrowthSchedulesAndProfiles)
     EXPECT_EQ(planar.halfWidth(0), 100u);
     EXPECT_EQ(planar.halfWidth(1), 102u);  // 100 + ceil(1.05)
     EXPECT_EQ(planar.halfWidth(5), 117u);  // 100 + ceil(1.05 * 16)
-    EXPECT_EQ(ArcSettings::profile("panda").minWindowGrowth, 1.);  // every window: opt-in only (README)
+    EXPECT_EQ(ArcSettings::profile("panda").minWindowGrowth, 1.25);  // README: Panda cells and Panda Cage 16
+    EXPECT_EQ(ArcSettings::profile("panda").solvers, ArcSettings::Solvers::COMPOSITE);
+    EXPECT_EQ(planar.minWindowGrowth, 1.);  // every window
+    EXPECT_EQ(planar.solvers, ArcSettings::Solvers::COMPOSITE_FIRST);
+    EXPECT_EQ(ArcSettings::profile("mobile").minWindowGrowth, 1.);
     EXPECT_THROW(ArcSettings::profile("humanoid"), ompl::Exception);
     EXPECT_THROW(ArcSettings::growthFromString("cubic"), ompl::Exception);
     EXPECT_THROW(ArcSettings::solversFromString("magic"), ompl::Exception);

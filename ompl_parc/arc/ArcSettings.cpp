@@ -18,6 +18,11 @@ ompl_parc::ArcSettings ompl_parc::ArcSettings::profile(const std::string &name)
         s.boundMargin = 1.;
         s.minBoundRange = 0.5;
         s.sampleCap = 50000;
+        if (name == "panda")
+        {
+            s.minWindowGrowth = 1.25;
+            s.solvers = Solvers::COMPOSITE;
+        }
         return s;
     }
     throw ompl::Exception("ArcSettings", "unknown profile '" + name + "' (valid: mobile, planar, panda)");

@@ -35,10 +35,11 @@ namespace ompl_parc
             ConflictResolver::WINDOW_TRIES times, the schedule's others skipped. The authors' exponential schedule
             starts at +1, +2, +4, ... timesteps, and a window widened at an endpoint past the schedule stays the same
             for many steps: nearly the same subproblem again, which ARC retried for most of its budget on the Panda
-            cells it failed. 1 (every profile's default): every window of the schedule is tried, and one equal to the
-            failed window goes global. Opt-in: 1.25 with composite RRT-Connect alone solved 19/20 Panda cells at 16
-            robots against 9-10/20, but lost Panda Cage 16 task 4, where the fifth try of one window is what succeeds
-            (README). */
+            cells it failed. A failed global round then starts the schedule over (fresh seeds), so a window that needs
+            more tries gets them between global rounds. 1 (the mobile and planar profiles): every window of the
+            schedule is tried, and one equal to the failed window goes global. The panda profile's 1.25, with
+            composite RRT-Connect alone, solved 19/20 Panda cells at 16 robots against 9-10/20 and Panda Cage 16
+            task 4 for seeds 1-3 (README); on 2D robots it lost rooms and crossing instances (without the cycle). */
         double minWindowGrowth{1.};
         /** \brief Timesteps by which an invalid local start (goal) side is widened until it is valid. */
         unsigned int endpointStep{200};
@@ -91,7 +92,7 @@ namespace ompl_parc
 
         /** \brief The authors' tuned values: "mobile" (w 200, linear +200, margin 2, min range 2, cap 5000),
             "planar" (w 100, exponential 1.05, endpoint step 10, margin 1, min range 0.5, cap 50000),
-            "panda" (w 20, exponential 1.05, endpoint step 10, margin 1, min range 0.5, cap 50000). Throws
+            "panda" (as planar with w 20; ours: min window growth 1.25, composite RRT-Connect only). Throws
             ompl::Exception for another name. */
         static ArcSettings profile(const std::string &name);
 

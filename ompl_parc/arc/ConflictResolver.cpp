@@ -7,6 +7,7 @@
 #include <ompl/util/Time.h>
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 
 namespace ob = ompl::base;
@@ -172,6 +173,8 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
         std::transform(hierarchy_.begin(), hierarchy_.end(), memories.begin(),
                        [](const SubproblemSolverPtr &solver) { return solver->makeMemory(); });
     };
+    const bool skipping = settings_.minWindowGrowth > 1.;
+    bool globalPosed = false;  // the memories are the global problem's
     for (unsigned int k = 0; !ptc; ++k)
     {
         Subproblem sub;
@@ -180,7 +183,6 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
         else
         {
             const auto [start, end] = window(plan, team, timestep, k);
-            const bool skipping = settings_.minWindowGrowth > 1.;
             // The schedule stopped growing, the window covers the team's whole plan or, when every window is tried,
             // it is the failed one again: the global problem.
             const bool stuck = k > 0 && (settings_.halfWidth(k) <= settings_.halfWidth(k - 1) ||
@@ -192,8 +194,10 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
             if (stuck || (start == 0 && end == latestArrival(plan, team)))
             {
                 repair.global = true;
-                sub = makeGlobal(plan, team, 0);
-                forget();
+                sub = makeGlobal(plan, members, t.globalRounds);
+                if (!globalPosed)
+                    forget();
+                globalPosed = true;
             }
             else if (sameSize && triesOfSize >= WINDOW_TRIES)
                 continue;
@@ -212,6 +216,7 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
         t.globalRounds += repair.global ? 1 : 0;
         lastStart = sub.windowStart;
         lastEnd = sub.windowEnd;
+        const auto posed = ompl::time::now();
         for (std::size_t s = 0; s < hierarchy_.size(); ++s)
         {
             const auto &solver = hierarchy_[s];
@@ -234,6 +239,9 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
                 return repair;
             }
         }
+        const double spent = ompl::time::seconds(ompl::time::now() - posed);
+        t.globalSeconds += repair.global ? spent : 0.;
+        t.againSeconds += !repair.global && t.passes > 0 ? spent : 0.;
         // The team's global problem failed around the other robots' fixed paths (a solver planned around them):
         // the next rounds plan every robot.
         if (repair.global && usesContext_ && members.size() < si_.getRobotCount())
@@ -241,6 +249,18 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
             members.resize(si_.getRobotCount());
             std::iota(members.begin(), members.end(), 0);
             forget();  // another team
+        }
+        // With skipping, a failed global round sends the schedule back to the first window (fresh seeds) while its
+        // later passes have had no more time than the global rounds: a window that needed more than WINDOW_TRIES
+        // seeds gets them, and the global problem, whose cap keeps doubling and whose solvers resume, at least half of
+        // the time after the first pass.
+        if (repair.global && skipping && t.againSeconds <= t.globalSeconds)
+        {
+            ++t.passes;
+            repair.global = false;
+            k = std::numeric_limits<unsigned int>::max();  // ++k: the first window again
+            sizeLength = 0.;
+            triesOfSize = 0;
         }
     }
     return std::nullopt;

@@ -26,7 +26,11 @@ namespace ompl_parc
     struct ResolveTrace
     {
         unsigned int calls{0}, expansions{0}, globalRounds{0};
+        /** \brief Passes of the window schedule after the first (ArcSettings::minWindowGrowth above 1). */
+        unsigned int passes{0};
         double longestCall{0.};
+        /** \brief Seconds of solver calls on global rounds and on the windows of the later passes. */
+        double globalSeconds{0.}, againSeconds{0.};
     };
 
     /** \brief ARC's conflict resolution for one conflict: windows around the conflict that grow until a
@@ -38,7 +42,9 @@ namespace ompl_parc
         than that factor longer than the first of their size are tried WINDOW_TRIES times and the schedule's others
         skipped. When the schedule stops growing (ArcSettings::halfWidth), the window covers the team's whole plan or,
         without skipping, equals the failed one, the attempt becomes the global problem (global starts and goals,
-        whole spaces), retried with fresh seeds until success or termination. When a solver of the hierarchy plans
+        whole spaces), retried with fresh seeds until success or termination; with skipping, a failed global round is
+        followed by the schedule again from the first window (fresh seeds; the global rounds' caps and memories kept)
+        while these later passes have taken no longer than the global rounds. When a solver of the hierarchy plans
         around the other robots (PP-ST-RRT) and the team's global problem has failed once, the next rounds plan every
         robot of the problem (the paper's global problem): the others' fixed paths may wall the team in for good. Such
         a repair covers every robot (P-ARC splices it first and drops the batch's other repairs, RepairLoop). Every
@@ -58,9 +64,9 @@ namespace ompl_parc
         static constexpr double MIN_CALL_SECONDS = 0.05;
 
         /** \brief How often windows of one size (less than ArcSettings::minWindowGrowth times as long as the first of
-            them) are tried when that factor exceeds 1: a fresh seed sometimes finds what the first try missed (with
-            the defaults Panda Cage 16 task 4 needs up to five), while more tries of one size held the budgets of the
-            Panda cells ARC failed (README). */
+            them) are tried in one pass of the schedule when that factor exceeds 1: a fresh seed sometimes finds what
+            the first try missed, while more tries of one size held the budgets of the Panda cells ARC failed
+            (README). A window needing more (Panda Cage 16 task 4: up to five) gets them in the later passes. */
         static constexpr unsigned int WINDOW_TRIES = 2;
 
         ConflictResolver(const MultiRobotSpaceInformation &si, ArcSettings settings,
