@@ -208,6 +208,27 @@ namespace
         }
         const std::chrono::milliseconds window_, global_;
     };
+
+    /** Resolves the head-on conflict at timestep 1280 with the planar profile and a least window growth of 1.25
+        until its first window (start 1180) is asked for the third time, the start of the schedule's third pass, or
+        after 2000 calls (a safety stop). */
+    ResolveTrace resolveUntilTheThirdPass(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan,
+                                          const std::shared_ptr<SlowSolver> &solver)
+    {
+        ArcSettings settings = ArcSettings::profile("planar");
+        settings.minWindowGrowth = 1.25;
+        const auto ptc = ob::PlannerTerminationCondition(
+            [&solver]
+            {
+                std::lock_guard<std::mutex> lock(solver->mutex_);
+                return std::count_if(solver->asked_.begin(), solver->asked_.end(),
+                                     [](const Subproblem &s) { return s.windowStart == 1180; }) == 3 ||
+                       solver->asked_.size() > 2000;
+            });
+        ResolveTrace trace;
+        EXPECT_FALSE(ConflictResolver(si, settings, {solver}).resolve(plan, {0, 1}, 1280, ptc, 1, &trace).has_value());
+        return trace;
+    }
 }  // namespace
 
 TEST_F(HeadOn, WindowsHardlyWiderThanTheFirstOfTheirSizeAreTriedTwiceThenSkippedAndTheScheduleCycles)
@@ -216,21 +237,9 @@ TEST_F(HeadOn, WindowsHardlyWiderThanTheFirstOfTheirSizeAreTriedTwiceThenSkipped
     // 235, 369, 638, 1176, 2251. The first five grow the window [1180, 1380] by 2 to 34 timesteps: nearly the same
     // subproblem again, tried once more (102) and then skipped. A window at least 1.25 times as long as the first of
     // the size being tried starts a new size.
-    ArcSettings settings = ArcSettings::profile("planar");
-    settings.minWindowGrowth = 1.25;
     // Global rounds of 50 ms, windows of no time: the later passes never have had more time than the global rounds.
     auto solver = std::make_shared<SlowSolver>(std::chrono::milliseconds(0), std::chrono::milliseconds(50));
-    ConflictResolver resolver(*problem.getSpaceInformation(), settings, {solver});
-    const auto ptc = ob::PlannerTerminationCondition(
-        [&]
-        {
-            std::lock_guard<std::mutex> lock(solver->mutex_);
-            // The first window (start 1180) asked a third time.
-            return std::count_if(solver->asked_.begin(), solver->asked_.end(),
-                                 [](const Subproblem &s) { return s.windowStart == 1180; }) == 3;
-        });
-    ResolveTrace trace;
-    EXPECT_FALSE(resolver.resolve(plan, {0, 1}, 1280, ptc, 1, &trace).has_value());
+    const ResolveTrace trace = resolveUntilTheThirdPass(*problem.getSpaceInformation(), plan, solver);
     std::vector<std::size_t> starts;
     for (const auto &s : solver->asked_)
         starts.push_back(s.windowStart);
@@ -243,8 +252,8 @@ TEST_F(HeadOn, WindowsHardlyWiderThanTheFirstOfTheirSizeAreTriedTwiceThenSkipped
     EXPECT_EQ(starts, expected);
     ASSERT_EQ(solver->asked_.size(), 19u);
     EXPECT_EQ(solver->asked_[8].windowEnd, 2560u);
-    EXPECT_EQ(solver->asked_[8].sampleCap, settings.sampleCap);
-    EXPECT_EQ(solver->asked_[17].sampleCap, 2 * settings.sampleCap);
+    EXPECT_EQ(solver->asked_[8].sampleCap, ArcSettings::profile("planar").sampleCap);
+    EXPECT_EQ(solver->asked_[17].sampleCap, 2 * ArcSettings::profile("planar").sampleCap);
     EXPECT_EQ(solver->memories_[17], solver->memories_[8]);  // the global problem goes on where it stopped
     EXPECT_NE(solver->memories_[8], 0);
     EXPECT_EQ(trace.expansions, 14u);
@@ -252,7 +261,7 @@ TEST_F(HeadOn, WindowsHardlyWiderThanTheFirstOfTheirSizeAreTriedTwiceThenSkipped
     EXPECT_EQ(trace.passes, 2u);
 
     // With a least growth of 1 (the mobile and planar profiles') every window of the schedule is tried.
-    settings.minWindowGrowth = 1.;
+    const ArcSettings settings = ArcSettings::profile("planar");
     auto every = std::make_shared<RecordingSolver>();
     ConflictResolver everyResolver(*problem.getSpaceInformation(), settings, {every});
     EXPECT_FALSE(everyResolver
@@ -275,21 +284,8 @@ TEST_F(HeadOn, LaterPassesOfTheScheduleGetNoMoreTimeThanTheGlobalRounds)
 {
     // Passes of 8 windows of 20 ms and global rounds of 2 ms: after the second pass (160 ms of windows) the global
     // problem gets rounds until it has had as much time, then the third pass starts.
-    ArcSettings settings = ArcSettings::profile("planar");
-    settings.minWindowGrowth = 1.25;
     auto solver = std::make_shared<SlowSolver>(std::chrono::milliseconds(20), std::chrono::milliseconds(2));
-    ConflictResolver resolver(*problem.getSpaceInformation(), settings, {solver});
-    const auto ptc = ob::PlannerTerminationCondition(
-        [&]
-        {
-            std::lock_guard<std::mutex> lock(solver->mutex_);
-            // The first window (start 1180) asked a third time, or a safety stop.
-            return std::count_if(solver->asked_.begin(), solver->asked_.end(),
-                                 [](const Subproblem &s) { return s.windowStart == 1180; }) == 3 ||
-                   solver->asked_.size() > 2000;
-        });
-    ResolveTrace trace;
-    EXPECT_FALSE(resolver.resolve(plan, {0, 1}, 1280, ptc, 1, &trace).has_value());
+    const ResolveTrace trace = resolveUntilTheThirdPass(*problem.getSpaceInformation(), plan, solver);
     ASSERT_GT(solver->asked_.size(), 18u);
     EXPECT_LE(solver->asked_.size(), 2000u);
     EXPECT_EQ(trace.passes, 2u);
