@@ -174,7 +174,6 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
                        [](const SubproblemSolverPtr &solver) { return solver->makeMemory(); });
     };
     const bool skipping = settings_.minWindowGrowth > 1.;
-    bool globalPosed = false;  // the memories are the global problem's
     for (unsigned int k = 0; !ptc; ++k)
     {
         Subproblem sub;
@@ -195,9 +194,8 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
             {
                 repair.global = true;
                 sub = makeGlobal(plan, members, t.globalRounds);
-                if (!globalPosed)
+                if (t.globalRounds == 0)  // later passes go on with the memories of the earlier global rounds
                     forget();
-                globalPosed = true;
             }
             else if (sameSize && triesOfSize >= WINDOW_TRIES)
                 continue;
@@ -258,9 +256,7 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
         {
             ++t.passes;
             repair.global = false;
-            k = std::numeric_limits<unsigned int>::max();  // ++k: the first window again
-            sizeLength = 0.;
-            triesOfSize = 0;
+            k = std::numeric_limits<unsigned int>::max();  // ++k: the first window again (a new size)
         }
     }
     return std::nullopt;
