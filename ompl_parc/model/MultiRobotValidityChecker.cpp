@@ -1,6 +1,7 @@
 #include "ompl_parc/model/MultiRobotValidityChecker.h"
 
 #include "ompl_parc/collision/CapsuleCollision.h"
+#include "ompl_parc/collision/CollidingPairSweep.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 
@@ -28,6 +29,11 @@ bool ompl_parc::MultiRobotValidityChecker::isValid(const ompl::base::State *stat
 
 bool ompl_parc::MultiRobotValidityChecker::anyPairCollides(const std::vector<CollisionBody> &bodies) const
 {
+    if (team_.size() >= SWEEP_FROM)
+    {
+        thread_local CollidingPairSweep sweep;
+        return sweep.any(bodies);
+    }
     for (std::size_t i = 0; i < team_.size(); ++i)
         for (std::size_t j = i + 1; j < team_.size(); ++j)
             if (bodiesCollide(bodies[i], bodies[j]))

@@ -13,7 +13,8 @@ namespace ompl_parc
         every robot valid alone, and every robot pair apart.
 
         Bodies are computed once per robot per call (thread-local buffers, so the checker is safe to share
-        between planner threads), then all pairs are tested with the bounding-sphere early-out. */
+        between planner threads); the pairs of a small team are all tested (with the bounding-sphere early-out),
+        those of a team of SWEEP_FROM robots or more through a CollidingPairSweep over the bodies' boxes. */
     class MultiRobotValidityChecker : public ompl::base::StateValidityChecker
     {
       public:
@@ -29,6 +30,10 @@ namespace ompl_parc
         /** \brief Robot::sweepValid() of a team of one (the initial stage's single-robot planning); std::nullopt for
             larger teams, whose robot pairs are checked at the samples. */
         std::optional<bool> sweepValid(const double *from, const double *to) const;
+
+        /** \brief The team size from which the robot pairs are found by a sweep over boxes instead of testing
+            them all (ompl_parc_bench_collision's `teamValidity`: the sweep's sort costs more than it saves below). */
+        static constexpr std::size_t SWEEP_FROM = 24;
 
       private:
         /** \brief True if two of the team's \e bodies overlap. */

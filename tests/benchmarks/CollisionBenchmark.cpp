@@ -7,9 +7,11 @@
    against the cage's 12 bars and a disc of Warehouse Aisle against its shelves and pillar, the analytic test
    (Environment::collides) against FCL (Environment::collidesFcl). "Env" variants check precomputed bodies;
    "Validity" ones the whole state check: Robot::isValid against the same steps with FCL (body,
-   self-collision, environment; the bounds test, which only isValid does, is a few comparisons). allocs_per_check counts
-   heap allocations inside the timed loop (this file replaces the global operator new to count them). */
+   self-collision, environment; the bounds test, which only isValid does, is a few comparisons). "teamPairs": a whole
+   team's robot pairs at one state, every pair against the sweep (below). allocs_per_check counts heap allocations
+   inside the timed loop (this file replaces the global operator new to count them). */
 #include "ompl_parc/collision/CapsuleCollision.h"
+#include "ompl_parc/collision/CollidingPairSweep.h"
 #include "ompl_parc/io/ScenarioFile.h"
 #include "ompl_parc/scenarios/PandaCage.h"
 #include "ompl_parc/scenarios/Scenarios.h"
@@ -246,3 +248,60 @@ BENCHMARK_CAPTURE(env, DiscWarehouse_Analytic, std::string("disc"), false);
 BENCHMARK_CAPTURE(env, DiscWarehouse_FCL, std::string("disc"), true);
 BENCHMARK_CAPTURE(validity, DiscWarehouse_Analytic, std::string("disc"), false);
 BENCHMARK_CAPTURE(validity, DiscWarehouse_FCL, std::string("disc"), true);
+
+/* A whole team's robot pairs at one state, as MultiRobotValidityChecker::isValid() tests them after each robot
+   alone: every pair against CollidingPairSweep::any(), on the bodies of the team at its start configurations (no
+   pair collides there: the common case of a valid path state, where no early exit helps). Mobile Cross stands in
+   two crossing rows (the sweep's worst layout: one row overlaps along either axis), a field instance spreads the
+   team over a square with obstacles. MultiRobotValidityChecker::SWEEP_FROM comes from these runs. */
+namespace
+{
+    std::vector<CollisionBody> startBodies(const std::string &scenario, std::size_t robots)
+    {
+        const auto problem = scenarios::createScenario(scenario, robots);
+        const auto &si = *problem.getSpaceInformation();
+        std::vector<CollisionBody> bodies(robots);
+        for (std::size_t i = 0; i < robots; ++i)
+            si.getRobot(i)->computeBody(problem.getStart(i).data(), bodies[i]);
+        return bodies;
+    }
+
+    void teamPairs(benchmark::State &state, const std::string &scenario, bool sweep)
+    {
+        const auto bodies = startBodies(scenario, static_cast<std::size_t>(state.range(0)));
+        CollidingPairSweep sweeper;
+        const std::size_t before = allocations.load();
+        for (auto _ : state)
+        {
+            bool any = false;
+            if (sweep)
+                any = sweeper.any(bodies);
+            else
+                for (std::size_t i = 0; i < bodies.size() && !any; ++i)
+                    for (std::size_t j = i + 1; j < bodies.size() && !any; ++j)
+                        any = bodiesCollide(bodies[i], bodies[j]);
+            benchmark::DoNotOptimize(any);
+        }
+        state.counters["allocs_per_check"] =
+            static_cast<double>(allocations.load() - before) / static_cast<double>(state.iterations());
+        state.SetItemsProcessed(state.iterations());
+    }
+
+    /** Team sizes around MultiRobotValidityChecker::SWEEP_FROM, and large ones. */
+    void crossTeams(benchmark::internal::Benchmark *b)
+    {
+        for (int robots : {4, 8, 16, 24, 32, 64, 256})
+            b->Arg(robots);
+    }
+
+    void fieldTeams(benchmark::internal::Benchmark *b)
+    {
+        for (int robots : {8, 16, 24, 32, 48})
+            b->Arg(robots);
+    }
+}  // namespace
+
+BENCHMARK_CAPTURE(teamPairs, EveryPairMobileCross, std::string("mobile_cross"), false)->Apply(crossTeams);
+BENCHMARK_CAPTURE(teamPairs, SweepMobileCross, std::string("mobile_cross"), true)->Apply(crossTeams);
+BENCHMARK_CAPTURE(teamPairs, EveryPairField, std::string("field"), false)->Apply(fieldTeams);
+BENCHMARK_CAPTURE(teamPairs, SweepField, std::string("field"), true)->Apply(fieldTeams);
