@@ -3,8 +3,8 @@
 #include "ompl_parc/collision/CapsuleCollision.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <numeric>
 
 void ompl_parc::CollidingPairSweep::sort(const std::vector<CollisionBody> &bodies)
 {

@@ -13,8 +13,8 @@ namespace ompl_parc
 {
     /** \brief The colliding pairs among many bodies (one per robot of a team at one moment), found by sweeping
         their boxes along the axis where the boxes spread furthest: only pairs whose boxes overlap get the exact
-        test. Testing every pair costs n (n - 1) / 2 exact tests per team state, 32 640 at 256 robots (about a
-        millisecond), and OMPL checks a solution path state by state (`PathGeometric::check()` in its benchmark,
+        test. Testing every pair costs n (n - 1) / 2 exact tests per team state (32 640 at 256 robots, 75-115 us
+        here), and OMPL checks a solution path state by state (`PathGeometric::check()` in its benchmark,
         a coupled planner's motions); apart from a crowd few boxes overlap, so the sweep tests few pairs after an
         O(n log n) sort. The answers are those of testing every pair: boxes are compared with a margin relative to
         the coordinates, so rounding in a box never hides a touching pair.
@@ -30,7 +30,7 @@ namespace ompl_parc
         bool any(const std::vector<CollisionBody> &bodies);
 
       private:
-        /** \brief Boxes of \e bodies, the sweep axis, the margin, and the bodies' order along the axis. */
+        /** \brief Boxes of \e bodies, the margin, and the bodies' extents along the sweep axis in order. */
         void sort(const std::vector<CollisionBody> &bodies);
 
         /** \brief Calls \e visit(i, j) with i < j for every pair whose boxes overlap, in sweep order, until it

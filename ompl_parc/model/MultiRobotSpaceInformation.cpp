@@ -11,9 +11,6 @@
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
-#include <cmath>
-#include <numeric>
-#include <optional>
 #include <set>
 #include <sstream>
 #include <utility>
