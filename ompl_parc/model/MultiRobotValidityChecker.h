@@ -32,7 +32,7 @@ namespace ompl_parc
         std::optional<bool> sweepValid(const double *from, const double *to) const;
 
         /** \brief The team size from which the robot pairs are found by a sweep over boxes instead of testing
-            them all (ompl_parc_bench_collision's `teamValidity`: the sweep's sort costs more than it saves below). */
+            them all (ompl_parc_bench_collision's `teamPairs`: below it the sweep's sort costs more than it saves). */
         static constexpr std::size_t SWEEP_FROM = 24;
 
       private:
