@@ -1,6 +1,7 @@
 #include "ompl_parc/planners/ArcPlannerBase.h"
 
 #include "ompl_parc/planners/subproblem/CompositeRRTConnectSolver.h"
+#include "ompl_parc/planners/subproblem/LatticeMapfSolver.h"
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
 #include "ompl_parc/util/InnerPlannerLog.h"
 #include "ompl_parc/util/PlannerSeed.h"
@@ -16,11 +17,12 @@ namespace ob = ompl::base;
 
 namespace
 {
-    /** The subproblem solvers of \e solvers, in the order they are tried. */
+    /** The subproblem solvers of \e settings, in the order they are tried. */
     std::vector<ompl_parc::SubproblemSolverPtr> makeHierarchy(const ompl_parc::ArcSettings &settings)
     {
         const auto prioritized = std::make_shared<ompl_parc::PrioritizedSTRRTSolver>();
         const auto composite = std::make_shared<ompl_parc::CompositeRRTConnectSolver>(0., settings.shortenPatches);
+        std::vector<ompl_parc::SubproblemSolverPtr> hierarchy;
         switch (settings.solvers)
         {
             case ompl_parc::ArcSettings::Solvers::COMPOSITE:
@@ -28,11 +30,21 @@ namespace
             case ompl_parc::ArcSettings::Solvers::PRIORITIZED:
                 return {prioritized};
             case ompl_parc::ArcSettings::Solvers::COMPOSITE_FIRST:
-                return {composite, prioritized};
+                hierarchy = {composite, prioritized};
+                break;
             case ompl_parc::ArcSettings::Solvers::HIERARCHY:
+                hierarchy = {prioritized, composite};
                 break;
         }
-        return {prioritized, composite};
+        if (settings.latticeMapf)
+        {
+            // After composite RRT-Connect: on a window it fails, MAPF's patch is found at once where prioritised
+            // planning can take the call's whole time cap (README: the order measured).
+            const bool compositeFirst = settings.solvers == ompl_parc::ArcSettings::Solvers::COMPOSITE_FIRST;
+            hierarchy.insert(compositeFirst ? hierarchy.begin() + 1 : hierarchy.end(),
+                             std::make_shared<ompl_parc::LatticeMapfSolver>());
+        }
+        return hierarchy;
     }
 }  // namespace
 
@@ -69,6 +81,7 @@ ompl_parc::ArcPlannerBase::ArcPlannerBase(const ob::SpaceInformationPtr &si, con
                        &ArcPlannerBase::getStraightInitial, "0,1");
     declareParam<bool>("shorten_patches", this, &ArcPlannerBase::setShortenPatches, &ArcPlannerBase::getShortenPatches,
                        "0,1");
+    declareParam<bool>("lattice_mapf", this, &ArcPlannerBase::setLatticeMapf, &ArcPlannerBase::getLatticeMapf, "0,1");
     declareParam<unsigned int>("seed", this, &ArcPlannerBase::setSeed, &ArcPlannerBase::getSeed);
     for (const auto &[name, property] : progress_.properties())
         addPlannerProgressProperty(name, property);
@@ -164,6 +177,12 @@ void ompl_parc::ArcPlannerBase::setShortenPatches(bool shorten)
 {
     options_.settings.shortenPatches = shorten;
     options_.settings.explicitFields |= ArcSettings::SHORTEN_PATCHES;
+}
+
+void ompl_parc::ArcPlannerBase::setLatticeMapf(bool mapf)
+{
+    options_.settings.latticeMapf = mapf;
+    options_.settings.explicitFields |= ArcSettings::LATTICE_MAPF;
 }
 
 void ompl_parc::ArcPlannerBase::setSeed(unsigned int seed)

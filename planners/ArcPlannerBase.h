@@ -83,6 +83,8 @@ namespace ompl_parc
         bool getStraightInitial() const { return getSettings().straightInitial; }
         void setShortenPatches(bool shorten);
         bool getShortenPatches() const { return getSettings().shortenPatches; }
+        void setLatticeMapf(bool mapf);
+        bool getLatticeMapf() const { return getSettings().latticeMapf; }
         /** \brief Seconds of time-aware shortcutting (PlanSmoother) after a solution; 0 (the default): none. */
         void setSmoothing(double seconds) { smoothing_.setBudget(seconds); }
         double getSmoothing() const { return smoothing_.getBudget(); }

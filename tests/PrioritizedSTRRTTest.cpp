@@ -18,24 +18,12 @@
 
 using namespace ompl_parc;
 using ompl_parc::test::validatePatch;
+using ompl_parc::test::wholeProblem;
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
 
 namespace
 {
-    /** The whole of \e problem as a subproblem of all its robots. */
-    Subproblem wholeProblem(const MultiRobotProblem &problem)
-    {
-        Subproblem sub;
-        for (std::size_t i = 0; i < problem.getRobotCount(); ++i)
-        {
-            sub.robots.push_back(i);
-            sub.starts.push_back(problem.getStart(i));
-            sub.goals.push_back(problem.getGoal(i));
-        }
-        return sub;
-    }
-
     /** Discs 'a' and 'b' in a corridor one disc wide along y = 0 (x from -10 to 10), with a gap below it at
         x = 0 that leads to an open area. */
     MultiRobotProblem corridor(std::vector<std::vector<double>> starts, std::vector<std::vector<double>> goals)

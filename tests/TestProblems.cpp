@@ -63,6 +63,18 @@ std::vector<double> ompl_parc::test::straightLine(const std::vector<double> &a, 
     return flat;
 }
 
+ompl_parc::Subproblem ompl_parc::test::wholeProblem(const MultiRobotProblem &problem)
+{
+    Subproblem sub;
+    for (std::size_t i = 0; i < problem.getRobotCount(); ++i)
+    {
+        sub.robots.push_back(i);
+        sub.starts.push_back(problem.getStart(i));
+        sub.goals.push_back(problem.getGoal(i));
+    }
+    return sub;
+}
+
 ompl_parc::ValidationReport ompl_parc::test::validatePatch(const MultiRobotProblem &problem, const Subproblem &sub,
                                                            const Patch &patch)
 {

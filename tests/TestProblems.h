@@ -64,6 +64,9 @@ namespace ompl_parc::test
     /** \brief The plan of \e problem in which every robot goes straight from its start to its goal. */
     MultiRobotPlan straightLinePlan(const MultiRobotProblem &problem);
 
+    /** \brief The whole of \e problem as a subproblem of all its robots (ARC's global problem of every robot). */
+    Subproblem wholeProblem(const MultiRobotProblem &problem);
+
     /** \brief A subproblem's patch as a plan of its own team, re-checked by the independent validator. */
     ValidationReport validatePatch(const MultiRobotProblem &problem, const Subproblem &sub, const Patch &patch);
 

@@ -48,6 +48,7 @@ void ompl_parc::ArcSettings::applyProfile(const std::string &name)
     take(SIMPLIFY_INITIAL, simplifyInitial, p.simplifyInitial);
     take(SHORTEN_PATCHES, shortenPatches, p.shortenPatches);
     take(STRAIGHT_INITIAL, straightInitial, p.straightInitial);
+    take(LATTICE_MAPF, latticeMapf, p.latticeMapf);
 }
 
 std::vector<std::string> ompl_parc::ArcSettings::profileNames()

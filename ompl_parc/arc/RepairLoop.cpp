@@ -214,10 +214,12 @@ bool ompl_parc::RepairLoop::repairBatch(const std::vector<BatchEntry> &batch,
         ++statistics_.conflicts;
         if (repair)
         {
-            OMPL_DEBUG("conflict %u: robots %zu and %zu at t=%zu, team {%s}: repaired by %s over [%zu, %zu]%s",
-                       statistics_.conflicts, conflict.first, conflict.second, conflict.timestep,
-                       listed(batch[k].team).c_str(), repair->solver.c_str(), repair->subproblem.windowStart,
-                       repair->subproblem.windowEnd, repair->global ? " (global)" : "");
+            OMPL_DEBUG(
+                "conflict %u: robots %zu and %zu at t=%zu, team {%s}: repaired by %s over [%zu, %zu]%s, "
+                "patch of %zu timesteps",
+                statistics_.conflicts, conflict.first, conflict.second, conflict.timestep,
+                listed(batch[k].team).c_str(), repair->solver.c_str(), repair->subproblem.windowStart,
+                repair->subproblem.windowEnd, repair->global ? " (global)" : "", repair->patch.getDuration());
             applyRepair(*repair);
             for (std::size_t r : repair->subproblem.robots)
                 patched[r] = 1;

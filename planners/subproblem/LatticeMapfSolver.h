@@ -1,0 +1,48 @@
+#ifndef OMPL_PARC_LATTICE_MAPF_SOLVER_
+#define OMPL_PARC_LATTICE_MAPF_SOLVER_
+
+#include "ompl_parc/arc/SubproblemSolver.h"
+#include "ompl_parc/mapf/ConfigurationSearch.h"
+
+#include <vector>
+
+namespace ompl_parc
+{
+    /** \brief Coupled subproblem solver for teams of translating robots (discs): the whole team on one lattice, by
+        multi-agent path finding (ConfigurationSearch: LaCAM over PIBT).
+
+        What the other solvers lack in dense places (a crossing whose arms are full both ways, robots that must step
+        aside into free slots to let others pass): prioritised planning walls later robots in, composite RRT-Connect
+        seldom samples the few joint motions that work. Here every robot moves each step and pushes the robots in its
+        way aside, and the search over configurations is complete on its lattice. The lattice step is just over twice
+        the team's largest bounding radius (robots on distinct points never touch), its origin drawn from the seed
+        (so retries see other lattices); each robot first steps from its start onto a lattice point of its own, in
+        waves of robots whose steps are clear of each other and of the others, and leaves the lattice the same way for
+        its goal. Every segment of the resulting team path is checked with the team's motion validator (robots and
+        environment) before it is laid on the timestep grid, so a patch is as valid as a composite RRT-Connect one.
+
+        Declines (returns false at once) teams with a robot that does not translate (LatticeSearch::applies), of mixed
+        dimensions, or whose local box holds more than maxPoints lattice points. Ignores the subproblem's context
+        (robots outside the team), as composite RRT-Connect does; the sample cap does not apply (the search is bounded
+        by its memory cap and the termination condition). */
+    class LatticeMapfSolver : public SubproblemSolver
+    {
+      public:
+        /** \brief \e maxPoints: the largest lattice (points in the local box, free or not) the solver builds. */
+        explicit LatticeMapfSolver(std::size_t maxPoints = 1u << 18);
+
+        std::string getName() const override { return "lattice-mapf"; }
+
+        bool solve(const MultiRobotSpaceInformation &si, const Subproblem &subproblem,
+                   const ompl::base::PlannerTerminationCondition &ptc, std::uint_fast32_t seed,
+                   Patch &patch) const override;
+
+        /** \brief Whether the solver applies to the robots \e robots of \e si (see the class description). */
+        static bool applies(const MultiRobotSpaceInformation &si, const std::vector<std::size_t> &robots);
+
+      private:
+        std::size_t maxPoints_;
+    };
+}  // namespace ompl_parc
+
+#endif
