@@ -49,13 +49,20 @@ namespace
     class Search
     {
       public:
-        Search(const ompl_parc::LatticeGraph &graph, const Configuration &goals, std::uint_fast32_t seed)
+        /** The hop tables (one breadth-first search per robot) until \e ptc fires: complete() says if they are. */
+        Search(const ompl_parc::LatticeGraph &graph, const Configuration &goals, std::uint_fast32_t seed,
+               const ompl::base::PlannerTerminationCondition &ptc)
             : graph_(graph), goals_(goals), rng_(seed), now_(graph.size(), NOBODY), next_(graph.size(), NOBODY)
         {
             hops_.resize(goals.size());
-            for (std::size_t i = 0; i < goals.size(); ++i)
+            for (std::size_t i = 0; i < goals.size() && !ptc; ++i)
                 graph.hopsTo(goals[i], hops_[i]);
         }
+
+        bool complete() const { return hops_.empty() || !hops_.back().empty(); }
+
+        /** The search's random sequence (ties, and the order of the constraints tried). */
+        boost::random::mt19937 &rng() { return rng_; }
 
         bool reachable(const Configuration &starts) const
         {
@@ -188,9 +195,6 @@ namespace
         std::vector<unsigned int> levels_;
         const Configuration *cur_{nullptr};
         Configuration *out_{nullptr};
-
-      public:
-        boost::random::mt19937 &rng() { return rng_; }
     };
 }  // namespace
 
@@ -262,8 +266,8 @@ std::vector<ompl_parc::ConfigurationSearch::Configuration> ompl_parc::Configurat
     const std::size_t n = starts.size();
     if (goals.size() != n || n == 0)
         return {};
-    Search search(graph_, goals, seed);
-    if (!search.reachable(starts))
+    Search search(graph_, goals, seed, ptc);
+    if (!search.complete() || !search.reachable(starts))
         return {};
     std::vector<std::unique_ptr<Node>> nodes;
     std::unordered_map<Configuration, std::size_t, ConfigurationHash> explored;

@@ -7,6 +7,7 @@
 #include "ompl_parc/util/OmplCompat.h"
 #include "ompl_parc/util/SeededPathSimplifier.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
+#include "ompl_parc/util/StopSignal.h"
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/geometric/PathGeometric.h>
@@ -245,6 +246,8 @@ namespace
                 return std::nullopt;
             Lattice lattice;
             lattice.graph = std::make_unique<LatticeGraph>(low, high, origin, step, free, move, maxPoints);
+            if (ptc)
+                return std::nullopt;
             auto entry = attach(*lattice.graph, robots, subproblem.starts, reaches);
             auto exit = entry ? attach(*lattice.graph, robots, subproblem.goals, reaches) : std::nullopt;
             if (!entry || !exit)
@@ -359,13 +362,25 @@ bool ompl_parc::LatticeMapfSolver::solve(const MultiRobotSpaceInformation &si, c
         }
     }
     const auto distinct = distinctRobots(robots, reaches);
-    const auto free = [&](const double *q)
-    { return std::all_of(distinct.begin(), distinct.end(), [q](const Robot *r) { return r->isValid(q); }); };
+    // The checks of a large lattice poll the stop every 1024 points or moves (a lattice built after it is dropped).
+    std::size_t checks = 0;
+    bool halted = false;
+    const auto stopped = [&]
+    {
+        if (!halted && (++checks & 1023) == 0)
+            halted = ptc;
+        return halted;
+    };
+    const auto free = [&](const double *q) {
+        return !stopped() &&
+               std::all_of(distinct.begin(), distinct.end(), [q](const Robot *r) { return r->isValid(q); });
+    };
     const auto move = [&](const double *a, const double *b)
-    { return std::all_of(distinct.begin(), distinct.end(), [a, b](const Robot *r) { return moveValid(*r, a, b); }); };
-    Subproblem whole = subproblem;
-    whole.bounds.clear();
-    const auto team = whole.createSpaceInformation(si, seed);
+    {
+        return !stopped() &&
+               std::all_of(distinct.begin(), distinct.end(), [a, b](const Robot *r) { return moveValid(*r, a, b); });
+    };
+    std::shared_ptr<MultiRobotSpaceInformation> team;  // the team's space without local bounds, once needed
     boost::random::mt19937 rng(static_cast<std::uint32_t>(seed));
     // Two lattices: a wide one first, whose step (over 2 sqrt 2 bounding radii) lets a robot turn into the point
     // another leaves at right angles at the same time, so that every step is one motion; then a tight one (over 2
@@ -376,13 +391,19 @@ bool ompl_parc::LatticeMapfSolver::solve(const MultiRobotSpaceInformation &si, c
         const double step = (largest > 0. ? 2.02 * largest : 0.1) * (wide ? std::sqrt(2.) : 1.);
         const auto lattice =
             buildLattice(low, high, step, free, move, robots, subproblem, reaches, maxPoints_, rng, ptc);
-        if (!lattice || !team)
+        if (!lattice)
             continue;
         const LatticeGraph &graph = *lattice->graph;
         ConfigurationSearch search(graph);
         const auto steps = search.solve(lattice->entry.vertices, lattice->exit.vertices, ptc, seed);
         if (steps.empty())
             continue;
+        if (!team)
+        {
+            Subproblem whole = subproblem;
+            whole.bounds.clear();
+            team = whole.createSpaceInformation(si, seed);
+        }
         og::PathGeometric path(team);
         if (!layOut(*team, graph, *lattice, steps, subproblem, !wide, path))
             continue;
@@ -395,9 +416,13 @@ bool ompl_parc::LatticeMapfSolver::solve(const MultiRobotSpaceInformation &si, c
         // the initial paths'), every change checked on the team's space: joint straight motions across the waves and
         // the lattice's corners where they are clear (field and rooms of 48 robots, instances 0-4: ARC's makespans
         // summed 156 000 and 268 000 timesteps against 281 000 and 373 000 without).
+        // OMPL's simplifier takes no stop: under the scope every motion check it makes fails once ptc fires.
+        const StopSignal::Scope scope(ptc);
         SeededPathSimplifier simplifier(team, mixSeed(seed, 0x5eed));
         simplifier.reduceVertices(path);
         compat::shortcutPath(simplifier, path, 128, 32);
+        if (ptc)
+            return false;
         patch.paths = MultiRobotPlan::layTeamPath(*team, path);
         return true;
     }

@@ -14,12 +14,14 @@ namespace ompl_parc
         What the other solvers lack in dense places (a crossing whose arms are full both ways, robots that must step
         aside into free slots to let others pass): prioritised planning walls later robots in, composite RRT-Connect
         seldom samples the few joint motions that work. Here every robot moves each step and pushes the robots in its
-        way aside, and the search over configurations is complete on its lattice. The lattice step is just over twice
-        the team's largest bounding radius (robots on distinct points never touch), its origin drawn from the seed
-        (so retries see other lattices); each robot first steps from its start onto a lattice point of its own, in
-        waves of robots whose steps are clear of each other and of the others, and leaves the lattice the same way for
-        its goal. Every segment of the resulting team path is checked with the team's motion validator (robots and
-        environment) before it is laid on the timestep grid, so a patch is as valid as a composite RRT-Connect one.
+        way aside, and the search over configurations is complete on its lattice. The lattice step is just over 2 sqrt 2
+        times the team's largest bounding radius (robots on distinct points never touch, even when one turns into the
+        point another leaves), then, if that lattice fails, just over twice it (more points in narrow places; such turns
+        then wait a sub-step); its origin is drawn from the seed (so retries see other lattices). Each robot first
+        steps from its start onto a lattice point of its own, in waves of robots whose steps are clear of each other
+        and of the others, and leaves the lattice the same way for its goal. Every segment of the resulting team path
+        is checked with the team's motion validator (robots and environment) before it is laid on the timestep grid, so
+        a patch is as valid as a composite RRT-Connect one; it is then shortened with OMPL's simplifier (bounded).
 
         Declines (returns false at once) teams with a robot that does not translate (LatticeSearch::applies), of mixed
         dimensions, or whose local box holds more than maxPoints lattice points. Ignores the subproblem's context
