@@ -131,8 +131,14 @@ TEST(Arc, ParametersAreDeclaredAndStatisticsReported)
     auto &params = arc.params();
     for (const char *name : {"profile", "window", "growth", "growth_step", "min_window_growth", "endpoint_step",
                              "bound_margin", "min_bound_range", "sample_cap", "solvers", "simplify_initial",
-                             "straight_initial", "shorten_patches", "smooth", "seed"})
+                             "straight_initial", "shorten_patches", "lattice_mapf", "smooth", "seed"})
         EXPECT_TRUE(params.hasParam(name)) << name;
+    EXPECT_TRUE(arc.getLatticeMapf());
+    EXPECT_TRUE(params.setParam("lattice_mapf", "0"));
+    EXPECT_FALSE(arc.getLatticeMapf());
+    EXPECT_TRUE(params.setParam("profile", "mobile"));  // a profile keeps what was set one by one
+    EXPECT_FALSE(arc.getLatticeMapf());
+    EXPECT_TRUE(params.setParam("lattice_mapf", "1"));
     EXPECT_TRUE(params.setParam("profile", "planar"));
     EXPECT_EQ(arc.getWindow(), 100u);
     EXPECT_EQ(arc.getGrowth(), "exponential");

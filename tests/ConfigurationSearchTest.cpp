@@ -122,3 +122,23 @@ TEST(ConfigurationSearch, ReturnsNothingForAnUnreachableGoalOrOnceStopped)
         stopped.solve({at(open, 0, 0)}, {at(open, 4, 4)}, ob::PlannerTerminationCondition([] { return true; }), 1)
             .empty());
 }
+
+TEST(ConfigurationSearch, GivesUpAtItsMemoryCap)
+{
+    // The corridor two robots can never pass each other in, so the search would try every configuration: with room
+    // for a handful of entries it stops at once, and says so by its node count.
+    const auto corridor = grid(9, 1, [](int, int) { return true; });
+    ConfigurationSearch search(corridor);
+    search.setMaxEntries(16);
+    EXPECT_TRUE(search
+                    .solve({at(corridor, 0, 0), at(corridor, 8, 0)}, {at(corridor, 8, 0), at(corridor, 0, 0)},
+                           ob::timedPlannerTerminationCondition(30.), 1)
+                    .empty());
+    EXPECT_LE(search.getNodeCount(), 8u);
+    ConfigurationSearch unbounded(corridor);
+    EXPECT_TRUE(unbounded
+                    .solve({at(corridor, 0, 0), at(corridor, 8, 0)}, {at(corridor, 8, 0), at(corridor, 0, 0)},
+                           ob::timedPlannerTerminationCondition(30.), 1)
+                    .empty());
+    EXPECT_GT(unbounded.getNodeCount(), search.getNodeCount());
+}

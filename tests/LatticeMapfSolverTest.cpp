@@ -119,3 +119,19 @@ TEST(LatticeMapfSolver, ReturnsPromptlyWhenStopped)
         EXPECT_LT(seconds, limit + test::promptReturn()) << seconds;
     }
 }
+
+TEST(LatticeMapfSolver, OffLeavesCompositeAndPrioritizedAlone)
+{
+    // P-ARC-2 on a crossing of 16 robots, whose run with the solver takes 17 of its repairs from it (seed 1), without
+    // it (lattice_mapf=0): solved by composite RRT-Connect and PP-ST-RRT alone (0.8 s), none of its repairs this
+    // solver's.
+    const auto problem = scenarios::generateFamilyInstance("crossing", 16, 1);
+    PARC planner(problem.getSpaceInformation());
+    planner.setWorkers(2);
+    planner.setSeed(1);
+    planner.setLatticeMapf(false);
+    ASSERT_EQ(test::solveWith(planner, problem, 120.), ob::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_TRUE(SolutionValidator(problem).validate(planner.getPlan()).valid);
+    EXPECT_EQ(planner.getStatistics().solverWins.count("lattice-mapf"), 0u);
+    EXPECT_GT(planner.getStatistics().solverWins.count("composite-rrtc"), 0u);
+}
