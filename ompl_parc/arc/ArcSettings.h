@@ -52,7 +52,7 @@ namespace ompl_parc
         /** \brief Composite RRT-Connect first, then prioritised ST-RRT around the other robots: as fast as the
             authors' composite-only runs on Mobile Cross, Mobile Circle and Planar Cross, and it solves generated
             families (ring, field, crossing) where composite-only times out (README); the paper's hierarchy
-            (prioritised first) is one parameter away. */
+            (prioritised first) is one parameter away. With latticeMapf, the MAPF solver comes between the two. */
         Solvers solvers{Solvers::COMPOSITE_FIRST};
         /** \brief Shortcut the initial single-robot paths with OMPL's simplifier. */
         bool simplifyInitial{true};
@@ -68,8 +68,8 @@ namespace ompl_parc
         /** \brief Add multi-agent path finding on a lattice (LatticeMapfSolver) to the hierarchies that have more than
             one solver: after composite RRT-Connect in COMPOSITE_FIRST, last in HIERARCHY. It applies to teams of
             translating robots only (the others decline it at once) and solves the dense 2D teams where the other two
-            fail: issue 15's crossing of 48 robots, 0/5 (ARC, 30 s) without it, 5/5 in about a second with it (README).
-            Off: the solvers of the paper. */
+            fail: issue 15's crossing of 48 robots, 3 of 20 instances (ARC, 30 s) without it, all 20 with it (median
+            1.9 s), at a cost in plan length (README). Off: the solvers of the paper. */
         bool latticeMapf{true};
 
         /** \brief The fields, as bits of explicitFields. */
