@@ -14,9 +14,9 @@ namespace ompl_parc
 
         Robots standing on distinct points of a lattice whose step exceeds twice their bounding radius never touch,
         and neither do robots moving one step each at the same time unless one enters, at right angles, the point
-        another leaves (ConfigurationSearch::followLevels orders those), so a plan over this graph needs no
-        robot-robot check beyond its rules. Points and moves are checked against the static obstacles once, when the
-        graph is built. */
+        another leaves (ConfigurationSearch::followLevels orders those; from a step of 2 sqrt 2 radii on they may move
+        at once), so a plan over this graph needs no robot-robot check beyond its rules. Points and moves are checked
+       against the static obstacles once, when the graph is built. */
     class LatticeGraph
     {
       public:
