@@ -3,6 +3,7 @@
 #include "ompl_parc/collision/CollisionBody.h"
 #include "ompl_parc/mapf/LatticeGraph.h"
 #include "ompl_parc/model/MultiRobotPlan.h"
+#include "ompl_parc/robots/RakeMotionValidator.h"
 #include "ompl_parc/spacetime/LatticeSearch.h"
 #include "ompl_parc/util/OmplCompat.h"
 #include "ompl_parc/util/SeededPathSimplifier.h"
@@ -51,18 +52,21 @@ namespace
         return std::sqrt(squared) + body.boundRadius_;
     }
 
-    /** Whether \e robot may move straight from \e a to \e b among the static obstacles. */
+    /** Whether \e robot may move straight from \e a to \e b among the static obstacles: its own motion check
+        (swept where the kind can, else sampled at its checking resolution), through the validator's entry that leaves
+        OMPL's non-atomic motion counters alone, as P-ARC's workers may check one robot's moves at once. */
     bool moveValid(const Robot &robot, const double *a, const double *b)
     {
-        if (!robot.isValid(a) || !robot.isValid(b))
+        const auto *validator = dynamic_cast<const ompl_parc::RakeMotionValidator *>(
+            robot.getSpaceInformation()->getMotionValidator().get());
+        if (validator == nullptr || !robot.isValid(a) || !robot.isValid(b))
             return false;
-        if (const auto swept = robot.sweepValid(a, b))
-            return *swept;
-        const auto &rsi = robot.getSpaceInformation();
-        ob::ScopedState<> from(rsi->getStateSpace()), to(rsi->getStateSpace());
-        robot.configToState(a, from.get());
-        robot.configToState(b, to.get());
-        return rsi->checkMotion(from.get(), to.get());
+        const double segments = std::ceil(robot.distance(a, b) / robot.getStateSpace()->getLongestValidSegmentLength());
+        const unsigned int dim = robot.getDimension();
+        return validator
+            ->checkStraight(Point(a, a + dim), Point(b, b + dim),
+                            static_cast<unsigned int>(std::clamp(segments, 1., 1e9)))
+            .value_or(false);
     }
 
     /** The smallest distance between two points moving straight from a0 to a1 and from b0 to b1 in the same time. */
