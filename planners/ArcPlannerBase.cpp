@@ -3,6 +3,7 @@
 #include "ompl_parc/planners/subproblem/CompositeRRTConnectSolver.h"
 #include "ompl_parc/planners/subproblem/LatticeMapfSolver.h"
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
+#include "ompl_parc/planners/subproblem/SequentialRRTConnectSolver.h"
 #include "ompl_parc/util/InnerPlannerLog.h"
 #include "ompl_parc/util/PlannerSeed.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
@@ -20,30 +21,33 @@ namespace
     /** The subproblem solvers of \e settings, in the order they are tried. */
     std::vector<ompl_parc::SubproblemSolverPtr> makeHierarchy(const ompl_parc::ArcSettings &settings)
     {
+        using ompl_parc::ArcSettings;
         const auto prioritized = std::make_shared<ompl_parc::PrioritizedSTRRTSolver>();
-        const auto composite = std::make_shared<ompl_parc::CompositeRRTConnectSolver>(0., settings.shortenPatches);
-        std::vector<ompl_parc::SubproblemSolverPtr> hierarchy;
+        // Composite RRT-Connect, then (sequential) the same space searched one robot at a time.
+        std::vector<ompl_parc::SubproblemSolverPtr> rrtConnect{
+            std::make_shared<ompl_parc::CompositeRRTConnectSolver>(0., settings.shortenPatches)};
+        if (settings.sequential)
+            rrtConnect.push_back(std::make_shared<ompl_parc::SequentialRRTConnectSolver>(settings.shortenPatches));
         switch (settings.solvers)
         {
-            case ompl_parc::ArcSettings::Solvers::COMPOSITE:
-                return {composite};
-            case ompl_parc::ArcSettings::Solvers::PRIORITIZED:
+            case ArcSettings::Solvers::COMPOSITE:
+                return rrtConnect;
+            case ArcSettings::Solvers::PRIORITIZED:
                 return {prioritized};
-            case ompl_parc::ArcSettings::Solvers::COMPOSITE_FIRST:
-                hierarchy = {composite, prioritized};
-                break;
-            case ompl_parc::ArcSettings::Solvers::HIERARCHY:
-                hierarchy = {prioritized, composite};
+            case ArcSettings::Solvers::COMPOSITE_FIRST:
+            case ArcSettings::Solvers::HIERARCHY:
                 break;
         }
+        std::vector<ompl_parc::SubproblemSolverPtr> hierarchy;
+        if (settings.solvers == ArcSettings::Solvers::HIERARCHY)
+            hierarchy.push_back(prioritized);
+        hierarchy.insert(hierarchy.end(), rrtConnect.begin(), rrtConnect.end());
+        // After composite RRT-Connect: on a window it fails, MAPF's patch is found at once where prioritised
+        // planning can take the call's whole time cap (README: the order measured).
         if (settings.latticeMapf)
-        {
-            // After composite RRT-Connect: on a window it fails, MAPF's patch is found at once where prioritised
-            // planning can take the call's whole time cap (README: the order measured).
-            const bool compositeFirst = settings.solvers == ompl_parc::ArcSettings::Solvers::COMPOSITE_FIRST;
-            hierarchy.insert(compositeFirst ? hierarchy.begin() + 1 : hierarchy.end(),
-                             std::make_shared<ompl_parc::LatticeMapfSolver>());
-        }
+            hierarchy.push_back(std::make_shared<ompl_parc::LatticeMapfSolver>());
+        if (settings.solvers == ArcSettings::Solvers::COMPOSITE_FIRST)
+            hierarchy.push_back(prioritized);
         return hierarchy;
     }
 }  // namespace
@@ -82,6 +86,7 @@ ompl_parc::ArcPlannerBase::ArcPlannerBase(const ob::SpaceInformationPtr &si, con
     declareParam<bool>("shorten_patches", this, &ArcPlannerBase::setShortenPatches, &ArcPlannerBase::getShortenPatches,
                        "0,1");
     declareParam<bool>("lattice_mapf", this, &ArcPlannerBase::setLatticeMapf, &ArcPlannerBase::getLatticeMapf, "0,1");
+    declareParam<bool>("sequential", this, &ArcPlannerBase::setSequential, &ArcPlannerBase::getSequential, "0,1");
     declareParam<unsigned int>("seed", this, &ArcPlannerBase::setSeed, &ArcPlannerBase::getSeed);
     for (const auto &[name, property] : progress_.properties())
         addPlannerProgressProperty(name, property);
@@ -183,6 +188,12 @@ void ompl_parc::ArcPlannerBase::setLatticeMapf(bool mapf)
 {
     options_.settings.latticeMapf = mapf;
     options_.settings.explicitFields |= ArcSettings::LATTICE_MAPF;
+}
+
+void ompl_parc::ArcPlannerBase::setSequential(bool sequential)
+{
+    options_.settings.sequential = sequential;
+    options_.settings.explicitFields |= ArcSettings::SEQUENTIAL;
 }
 
 void ompl_parc::ArcPlannerBase::setSeed(unsigned int seed)

@@ -85,6 +85,8 @@ namespace ompl_parc
         bool getShortenPatches() const { return getSettings().shortenPatches; }
         void setLatticeMapf(bool mapf);
         bool getLatticeMapf() const { return getSettings().latticeMapf; }
+        void setSequential(bool sequential);
+        bool getSequential() const { return getSettings().sequential; }
         /** \brief Seconds of time-aware shortcutting (PlanSmoother) after a solution; 0 (the default): none. */
         void setSmoothing(double seconds) { smoothing_.setBudget(seconds); }
         double getSmoothing() const { return smoothing_.getBudget(); }

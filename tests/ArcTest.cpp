@@ -131,7 +131,7 @@ TEST(Arc, ParametersAreDeclaredAndStatisticsReported)
     auto &params = arc.params();
     for (const char *name : {"profile", "window", "growth", "growth_step", "min_window_growth", "endpoint_step",
                              "bound_margin", "min_bound_range", "sample_cap", "solvers", "simplify_initial",
-                             "straight_initial", "shorten_patches", "lattice_mapf", "smooth", "seed"})
+                             "straight_initial", "shorten_patches", "lattice_mapf", "sequential", "smooth", "seed"})
         EXPECT_TRUE(params.hasParam(name)) << name;
     EXPECT_TRUE(arc.getLatticeMapf());
     EXPECT_TRUE(params.setParam("lattice_mapf", "0"));

@@ -380,6 +380,9 @@ TEST(ArcSettings, GrowthSchedulesAndProfiles)
     EXPECT_EQ(planar.halfWidth(5), 117u);  // 100 + ceil(1.05 * 16)
     EXPECT_EQ(ArcSettings::profile("panda").minWindowGrowth, 1.25);  // README: Panda cells and Panda Cage 16
     EXPECT_EQ(ArcSettings::profile("panda").solvers, ArcSettings::Solvers::COMPOSITE);
+    EXPECT_TRUE(ArcSettings::profile("panda").sequential);  // README: Panda cells, session 24
+    EXPECT_FALSE(ArcSettings::profile("planar").sequential);
+    EXPECT_FALSE(ArcSettings::profile("mobile").sequential);
     EXPECT_EQ(planar.minWindowGrowth, 1.);  // every window
     EXPECT_EQ(planar.solvers, ArcSettings::Solvers::COMPOSITE_FIRST);
     EXPECT_EQ(ArcSettings::profile("mobile").minWindowGrowth, 1.);

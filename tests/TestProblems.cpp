@@ -72,6 +72,7 @@ ompl_parc::Subproblem ompl_parc::test::wholeProblem(const MultiRobotProblem &pro
         sub.starts.push_back(problem.getStart(i));
         sub.goals.push_back(problem.getGoal(i));
     }
+    sub.global = true;
     return sub;
 }
 

@@ -22,6 +22,7 @@ ompl_parc::ArcSettings ompl_parc::ArcSettings::profile(const std::string &name)
         {
             s.minWindowGrowth = 1.25;
             s.solvers = Solvers::COMPOSITE;
+            s.sequential = true;
         }
         return s;
     }
@@ -49,6 +50,7 @@ void ompl_parc::ArcSettings::applyProfile(const std::string &name)
     take(SHORTEN_PATCHES, shortenPatches, p.shortenPatches);
     take(STRAIGHT_INITIAL, straightInitial, p.straightInitial);
     take(LATTICE_MAPF, latticeMapf, p.latticeMapf);
+    take(SEQUENTIAL, sequential, p.sequential);
 }
 
 std::vector<std::string> ompl_parc::ArcSettings::profileNames()

@@ -71,6 +71,10 @@ namespace ompl_parc
             fail: issue 15's crossing of 48 robots, 3 of 20 instances (ARC, 30 s) without it, all 20 with it (median
             1.9 s), at a cost in plan length (README). Off: the solvers of the paper. */
         bool latticeMapf{true};
+        /** \brief Add moving the team's robots one at a time (SequentialRRTConnectSolver) right after composite
+            RRT-Connect: for arms whose workspaces overlap, where the coupled search runs out of time and most orders
+            of single-arm moves do not (README: what it gains and costs). */
+        bool sequential{false};
 
         /** \brief The fields, as bits of explicitFields. */
         enum Field : unsigned int
@@ -87,7 +91,8 @@ namespace ompl_parc
             SHORTEN_PATCHES = 1u << 9,
             STRAIGHT_INITIAL = 1u << 10,
             MIN_WINDOW_GROWTH = 1u << 11,
-            LATTICE_MAPF = 1u << 12
+            LATTICE_MAPF = 1u << 12,
+            SEQUENTIAL = 1u << 13
         };
         /** \brief The fields set one by one (planner parameters): a profile applied later keeps them, so a
             profile and explicit parameters give the same settings in any order (OMPL's ParamSet applies a

@@ -150,6 +150,7 @@ ompl_parc::Subproblem ompl_parc::ConflictResolver::makeGlobal(const MultiRobotPl
     fillEndpoints(plan, sub);
     fillContext(plan, sub);
     sub.sampleCap = Subproblem::doubledCap(settings_.sampleCap, round);
+    sub.global = true;
     return sub;
 }
 
@@ -227,8 +228,9 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
                 ptc, ob::PlannerTerminationCondition([start, cap]
                                                      { return ompl::time::seconds(ompl::time::now() - start) > cap; }));
             const StopSignal::Scope scope(capped);
-            const bool solved =
-                solver->resume(si_, sub, capped, mixSeed(seed, t.calls), repair.patch, memories[s].get());
+            // Memories belong to the team's global problem: a window (of a later pass) is posed afresh.
+            const bool solved = solver->resume(si_, sub, capped, mixSeed(seed, t.calls), repair.patch,
+                                               repair.global ? memories[s].get() : nullptr);
             t.longestCall = std::max(t.longestCall, ompl::time::seconds(ompl::time::now() - start));
             if (solved)
             {

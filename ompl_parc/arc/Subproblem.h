@@ -32,6 +32,9 @@ namespace ompl_parc
         std::vector<ompl::base::RealVectorBounds> bounds;
         /** \brief Largest number of planner iterations; 0: no cap. */
         unsigned int sampleCap{0};
+        /** \brief The team's global problem (ConflictResolver): its whole plan, from the robots' own starts to their
+            own goals, in their whole spaces; else a window, which starts and ends mid-motion. */
+        bool global{false};
 
         /** \brief \e cap x 2^\e round, clamped to the largest sampleCap: the cap of a retry's round, so that rounds
             grow their effort geometrically. */

@@ -1,9 +1,6 @@
 #include "ompl_parc/planners/subproblem/CompositeRRTConnectSolver.h"
 
-#include "ompl_parc/model/MultiRobotPlan.h"
-#include "ompl_parc/util/OmplCompat.h"
-#include "ompl_parc/util/SeededPathSimplifier.h"
-#include "ompl_parc/util/SeededRealVectorSampler.h"
+#include "ompl_parc/planners/subproblem/TeamPatch.h"
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
@@ -25,12 +22,7 @@ bool ompl_parc::CompositeRRTConnectSolver::solve(const MultiRobotSpaceInformatio
         return false;
 
     ob::ScopedState<> start(local), goal(local);
-    for (std::size_t k = 0; k < subproblem.robots.size(); ++k)
-    {
-        std::copy(subproblem.starts[k].begin(), subproblem.starts[k].end(), local->getRobotValues(start.get(), k));
-        std::copy(subproblem.goals[k].begin(), subproblem.goals[k].end(), local->getRobotValues(goal.get(), k));
-    }
-    if (!local->isValid(start.get()) || !local->isValid(goal.get()))
+    if (!team_patch::fillEndpoints(*local, subproblem, start.get(), goal.get()))
         return false;
 
     auto pdef = std::make_shared<ob::ProblemDefinition>(local);
@@ -44,15 +36,6 @@ bool ompl_parc::CompositeRRTConnectSolver::solve(const MultiRobotSpaceInformatio
     if (planner.solve(subproblem.cappedTermination(ptc)) != ob::PlannerStatus::EXACT_SOLUTION)
         return false;
 
-    auto &path = *pdef->getSolutionPath()->as<og::PathGeometric>();
-    if (simplify_)
-    {
-        // Bounded like the initial paths: one pass of vertex reduction and of shortcutting (128 steps, stop after
-        // 32 without improvement), each checked on the team's space (robots and environment).
-        SeededPathSimplifier simplifier(local, mixSeed(seed, 0x5eed));
-        simplifier.reduceVertices(path);
-        compat::shortcutPath(simplifier, path, 128, 32);
-    }
-    patch.paths = MultiRobotPlan::layTeamPath(*local, path);
+    team_patch::lay(local, *pdef->getSolutionPath()->as<og::PathGeometric>(), seed, simplify_, patch);
     return true;
 }
