@@ -11,8 +11,8 @@
 #include <algorithm>
 #include <cstdint>
 #include <map>
-#include <random>
 #include <memory>
+#include <random>
 #include <unordered_set>
 #include <utility>
 
@@ -106,6 +106,9 @@ namespace
             planner_->setProblemDefinition(pdef_);
             planner_->setup();
         }
+        // Its space's checkers refer to standing_: a move stays where it was made.
+        Move(const Move &) = delete;
+        Move &operator=(const Move &) = delete;
 
         /** The move's path from its start to its goal; empty while none is found. */
         const std::vector<Config> &path() const { return path_; }
@@ -158,8 +161,8 @@ namespace
 
         const std::shared_ptr<ompl_parc::MultiRobotSpaceInformation> &team() const { return team_; }
 
-        /** The team's robots in the order they move, each with its move's path (owned by the search); empty once ptc or
-        the sample cap stopped the search. */
+        /** The team's robots in the order they move, each with its move's path (owned by the search); empty once ptc
+            or the sample cap stopped the search. */
         std::vector<std::pair<std::size_t, const std::vector<Config> *>> run(const ompl_parc::Subproblem &subproblem,
                                                                              const ob::PlannerTerminationCondition &ptc)
         {
