@@ -19,7 +19,7 @@ if [ "${OMPL_PARC_SKIP_SANITIZERS:-0}" != "1" ]; then
     bash scripts/build.sh build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOMPL_PARC_SANITIZE=thread \
         -DOMPL_PARC_BUILD_BENCHMARKS=OFF -- --target sanitized_checks
     TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$PWD/tests/tsan.supp" ctest --test-dir build-tsan --output-on-failure \
-        -j"$(nproc)" -R 'Parc|SharedStates|BatchDetection|WorkerPool|OrTaskRunner|SpaceRegistryLock|SolutionValidator|ConflictDetector.Concurrent|InnerPlannerLog|tools.mpi'
+        -j"$(nproc)" -R 'Parc|SharedStates|HugePageMemory|BatchDetection|WorkerPool|OrTaskRunner|SpaceRegistryLock|SolutionValidator|ConflictDetector.Concurrent|InnerPlannerLog|tools.mpi'
     echo "== fuzzing the file parsers: libFuzzer, 200 000 inputs from a fixed seed (build-fuzz/) =="
     bash scripts/fuzz.sh 200000 1
 fi

@@ -1,7 +1,11 @@
 #include "ompl_parc/statespaces/HugePageMemory.h"
 
+#include <algorithm>
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <mutex>
 
 #ifdef __linux__
 #include <sys/mman.h>
@@ -23,6 +27,73 @@ namespace
     {
         return bytes >= ompl_parc::HugePageMemory::LARGE && bytes <= std::numeric_limits<std::size_t>::max() / 2;
     }
+
+    using ompl_parc::HugePageMemory;
+
+    /** Mappings freed lately, kept for the next allocate() of the same mapped length (see HugePageMemory): at most
+        HugePageMemory::KEPT_MAPPINGS of them and HugePageMemory::KEPT_BYTES in all, the oldest unmapped first. */
+    class KeptMappings
+    {
+      public:
+        /** The newest kept mapping of \e length bytes, or null. */
+        void *take(std::size_t length)
+        {
+            const std::lock_guard<std::mutex> lock(mutex_);
+            for (std::size_t k = count_; k-- > 0;)
+                if (kept_[k].length == length)
+                {
+                    void *memory = kept_[k].memory;
+                    bytes_ -= length;
+                    std::copy(kept_.begin() + static_cast<std::ptrdiff_t>(k) + 1,
+                              kept_.begin() + static_cast<std::ptrdiff_t>(count_),
+                              kept_.begin() + static_cast<std::ptrdiff_t>(k));
+                    --count_;
+                    return memory;
+                }
+            return nullptr;
+        }
+
+        /** Keep \e memory (\e length bytes mapped), unmapping the oldest kept ones to make room; a mapping larger
+            than KEPT_BYTES is unmapped at once. */
+        void keep(void *memory, std::size_t length)
+        {
+            if (length > HugePageMemory::KEPT_BYTES)
+            {
+                munmap(memory, length);
+                return;
+            }
+            const std::lock_guard<std::mutex> lock(mutex_);
+            std::size_t evicted = 0;
+            while (count_ - evicted == HugePageMemory::KEPT_MAPPINGS || bytes_ + length > HugePageMemory::KEPT_BYTES)
+            {
+                munmap(kept_[evicted].memory, kept_[evicted].length);
+                bytes_ -= kept_[evicted].length;
+                ++evicted;
+            }
+            std::copy(kept_.begin() + static_cast<std::ptrdiff_t>(evicted),
+                      kept_.begin() + static_cast<std::ptrdiff_t>(count_), kept_.begin());
+            count_ -= evicted;
+            kept_[count_++] = {memory, length};
+            bytes_ += length;
+        }
+
+      private:
+        struct Mapping
+        {
+            void *memory;
+            std::size_t length;
+        };
+        std::mutex mutex_;
+        std::array<Mapping, HugePageMemory::KEPT_MAPPINGS> kept_{};
+        std::size_t count_{0}, bytes_{0};
+    };
+
+    /** The process's kept mappings; never destroyed (a buffer may be freed while statics are destroyed). */
+    KeptMappings &keptMappings()
+    {
+        static auto *kept = new KeptMappings;
+        return *kept;
+    }
 }  // namespace
 #endif
 
@@ -34,6 +105,8 @@ void *ompl_parc::HugePageMemory::allocate(std::size_t bytes)
         // Map one huge page more than needed and keep the 2 MiB-aligned part: only aligned 2 MiB ranges can be huge
         // pages.
         const std::size_t length = mappedLength(bytes);
+        if (void *kept = keptMappings().take(length))
+            return kept;
         void *raw = mmap(nullptr, length + HUGE_PAGE, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
         if (raw == MAP_FAILED)  // no room for the extra page: unaligned, on ordinary pages (freed the same way)
         {
@@ -63,7 +136,7 @@ void ompl_parc::HugePageMemory::deallocate(void *memory, std::size_t bytes) noex
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     if (mappedOnItsOwn(bytes))
     {
-        munmap(memory, mappedLength(bytes));
+        keptMappings().keep(memory, mappedLength(bytes));
         return;
     }
 #endif

