@@ -7,6 +7,7 @@
 #include "ompl_parc/planners/PARC.h"
 #include "ompl_parc/scenarios/PandaCage.h"
 #include "ompl_parc/scenarios/Scenarios.h"
+#include "ompl_parc/statespaces/HugePageMemory.h"
 #include "ompl_parc/validation/SolutionValidator.h"
 
 #include <gtest/gtest.h>
@@ -261,6 +262,32 @@ INSTANTIATE_TEST_SUITE_P(
         return std::get<0>(info.param) + std::to_string(std::get<1>(info.param)) + "_W" +
                std::to_string(std::get<2>(info.param)) + (std::get<3>(info.param) ? "" : "_strict");
     });
+
+/* P-ARC's workers allocate and fill their shares of the solution path (at 256 robots a share is over
+   HugePageMemory::LARGE: mapped on its own, and kept for reuse when freed). Three solves, the third after the first's
+   path was freed while the second's is held, so that it may take the first's kept mappings: every path is exactly
+   the plan as handed to OMPL, and every plan validates. */
+TEST(Parc, SolutionPathsOfALargeTeamFollowThePlanWhenTheirMemoryIsReused)
+{
+    const auto problem = scenarios::createScenario("mobile_cross", 256);
+    std::vector<ob::PathPtr> held;
+    for (unsigned int solve = 0; solve < 3; ++solve)
+    {
+        PARC parc(problem.getSpaceInformation());
+        parc.setWorkers(2);
+        parc.setSeed(1 + solve);
+        ASSERT_EQ(test::solveWith(parc, problem, 240.), ob::PlannerStatus::EXACT_SOLUTION) << parc.getStatusMessage();
+        const auto report = SolutionValidator(problem).validate(parc.getPlan());
+        EXPECT_TRUE(report.valid) << report.message;
+        held.push_back(parc.getProblemDefinition()->getSolutionPath());
+        const auto &path = *held.back()->as<ompl::geometric::PathGeometric>();
+        EXPECT_GT(path.getStateCount() * problem.getSpaceInformation()->getStateSpace()->getSerializationLength(),
+                  2 * HugePageMemory::LARGE);
+        EXPECT_TRUE(test::pathFollowsPlan(*problem.getSpaceInformation(), path, parc.getPlan())) << "solve " << solve;
+        if (solve == 1)
+            held.erase(held.begin());
+    }
+}
 
 TEST(Parc, StopsPromptlyWithEveryWorkerJoinedThenContinues)
 {
