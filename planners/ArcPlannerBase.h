@@ -109,6 +109,9 @@ namespace ompl_parc
         /** \brief Conflicts per worker a batch may hold (RepairLoopOptions::batchPerWorker); throws for 0. */
         void setBatchPerWorker(unsigned int conflicts);
         unsigned int getBatchPerWorker() const { return options_.batchPerWorker; }
+        /** \brief Batches grow while their repairs do not meet (RepairLoopOptions::growBatches). */
+        void setGrowBatches(bool grow) { options_.growBatches = grow; }
+        bool getGrowBatches() const { return options_.growBatches; }
         void setLocalOr(bool localOr) { options_.localOr = localOr; }
         bool getLocalOr() const { return options_.localOr; }
         /** @} */

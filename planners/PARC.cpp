@@ -9,6 +9,7 @@ ompl_parc::PARC::PARC(const ob::SpaceInformationPtr &si) : ArcPlannerBase(si, "P
     declareParam<unsigned int>("workers", this, &PARC::setWorkers, &PARC::getWorkers, "1:1:64");
     declareParam<unsigned int>("horizon", this, &PARC::setHorizon, &PARC::getHorizon, "1:50:2000");
     declareParam<unsigned int>("batch_per_worker", this, &PARC::setBatchPerWorker, &PARC::getBatchPerWorker, "1:1:64");
+    declareParam<bool>("grow_batches", this, &PARC::setGrowBatches, &PARC::getGrowBatches, "0,1");
     declareParam<bool>("optimistic", this, &PARC::setOptimistic, &PARC::getOptimistic, "0,1");
     declareParam<bool>("local_or", this, &PARC::setLocalOr, &PARC::getLocalOr, "0,1");
 }
@@ -27,6 +28,7 @@ void ompl_parc::PARC::getPlannerData(ob::PlannerData &data) const
     p["workers INTEGER"] = std::to_string(getWorkers());
     p["batches INTEGER"] = std::to_string(s.batches);
     p["first_batch_size INTEGER"] = std::to_string(s.firstBatchSize);
+    p["largest_batch_size INTEGER"] = std::to_string(s.largestBatch);
     p["average_batch_size REAL"] = std::to_string(s.batches ? double(s.batchedConflicts) / s.batches : 0.);
     p["repair_attempts INTEGER"] = std::to_string(s.repairAttempts);
     p["cancelled_attempts INTEGER"] = std::to_string(s.cancelledAttempts + s.cancelledInitialAttempts);

@@ -25,14 +25,17 @@ namespace ompl_parc
         /** \brief P-ARC's counters and projected W-core times (zero before the first solve()). */
         const ParcStatistics &getParallelStatistics() const;
 
-        /** \name Declared parameters: W, H, conflicts per worker in a batch, optimistic or strict batches, local OR
+        /** \name Declared parameters: W, H, conflicts per worker in a batch, growing batches, optimistic or strict
+            batches, local OR
             @{ */
         using ArcPlannerBase::getBatchPerWorker;
+        using ArcPlannerBase::getGrowBatches;
         using ArcPlannerBase::getHorizon;
         using ArcPlannerBase::getLocalOr;
         using ArcPlannerBase::getOptimistic;
         using ArcPlannerBase::getWorkers;
         using ArcPlannerBase::setBatchPerWorker;
+        using ArcPlannerBase::setGrowBatches;
         using ArcPlannerBase::setHorizon;
         using ArcPlannerBase::setLocalOr;
         using ArcPlannerBase::setOptimistic;

@@ -2,6 +2,7 @@
 
 #include "ompl_parc/arc/BatchDetector.h"
 #include "ompl_parc/arc/ConflictResolver.h"
+#include "ompl_parc/arc/RepairLoop.h"
 #include "ompl_parc/planners/ARC.h"
 #include "ompl_parc/planners/ORPARC.h"
 #include "ompl_parc/planners/PARC.h"
@@ -319,23 +320,65 @@ TEST(Parc, BadWorkerAndHorizonSettingsAreClearErrors)
 
 /* A batch holds up to batch_per_worker x W conflicts (8 by default), and W with batch_per_worker = 1, the paper's
    batch: Mobile Cross 32 has many robot-disjoint conflicts around its middle, so the default's first batch holds more
-   than W. */
+   than W. Without grow_batches no batch holds more; with it (the default) Mobile Cross's crossing pairs, whose
+   repairs do not meet, fill batches of twice and four times W. */
 TEST(Parc, BatchesHoldUpToBatchPerWorkerTimesWConflicts)
 {
     const auto problem = scenarios::createMobileCross(32);
-    for (unsigned int perWorker : {8u, 1u})
+    for (const bool grow : {false, true})
+        for (unsigned int perWorker : {8u, 1u})
+        {
+            PARC parc(problem.getSpaceInformation());
+            parc.setWorkers(2);
+            parc.setBatchPerWorker(perWorker);
+            parc.setGrowBatches(grow);
+            parc.setSeed(3);
+            ASSERT_EQ(test::solveWith(parc, problem), ob::PlannerStatus::EXACT_SOLUTION) << parc.getStatusMessage();
+            EXPECT_TRUE(SolutionValidator(problem).validate(parc.getPlan()).valid);
+            const auto &s = parc.getParallelStatistics();
+            EXPECT_LE(s.firstBatchSize, 2 * perWorker);
+            if (perWorker > 1)
+                EXPECT_GT(s.firstBatchSize, 2u);
+            if (!grow)
+                EXPECT_LE(s.largestBatch, 2 * perWorker);
+            else if (perWorker == 1)
+                EXPECT_GE(s.largestBatch, 8u);
+        }
+}
+
+/* The growth rule on its own: twice as many after a full batch none of whose conflicts pairs robots of two different
+   repairs of the batch before, up to 8 x the base; the same after a batch that was not full; back to the base after
+   a conflict between two repairs' robots (a conflict within one repair's team, or with a robot no repair moved, is
+   not a meeting). */
+TEST(Parc, BatchCapacityGrowsWhileTheRepairsOfABatchDoNotMeet)
+{
+    // The batch before: robots 0 and 1 repaired together, 2 and 3 together; robots 4 to 63 not repaired.
+    std::vector<int> lastRepair(64, -1);
+    lastRepair[0] = lastRepair[1] = 0;
+    lastRepair[2] = lastRepair[3] = 1;
+    const auto batch = [](std::vector<std::pair<std::size_t, std::size_t>> pairs)
     {
-        PARC parc(problem.getSpaceInformation());
-        parc.setWorkers(2);
-        parc.setBatchPerWorker(perWorker);
-        parc.setSeed(3);
-        ASSERT_EQ(test::solveWith(parc, problem), ob::PlannerStatus::EXACT_SOLUTION) << parc.getStatusMessage();
-        EXPECT_TRUE(SolutionValidator(problem).validate(parc.getPlan()).valid);
-        const auto &s = parc.getParallelStatistics();
-        EXPECT_LE(s.firstBatchSize, 2 * perWorker);
-        if (perWorker > 1)
-            EXPECT_GT(s.firstBatchSize, 2u);
-    }
+        std::vector<BatchEntry> entries;
+        for (const auto &[a, b] : pairs)
+            entries.push_back({Conflict{a, b, 10}, {a, b}});
+        return entries;
+    };
+    // n conflicts of robots no repair moved.
+    const auto fresh = [&batch](std::size_t n)
+    {
+        std::vector<std::pair<std::size_t, std::size_t>> pairs;
+        for (std::size_t k = 0; k < n; ++k)
+            pairs.emplace_back(4 + 2 * k, 5 + 2 * k);
+        return batch(pairs);
+    };
+    EXPECT_EQ(RepairLoop::nextBatchCapacity(2, 2, batch({{0, 4}, {1, 5}}), lastRepair), 4u);
+    EXPECT_EQ(RepairLoop::nextBatchCapacity(2, 2, batch({{0, 1}, {4, 5}}), lastRepair), 4u);
+    EXPECT_EQ(RepairLoop::nextBatchCapacity(2, 8, batch({{0, 4}, {1, 5}}), lastRepair), 8u);  // not full
+    EXPECT_EQ(RepairLoop::nextBatchCapacity(2, 8, fresh(8), lastRepair), 16u);
+    EXPECT_EQ(RepairLoop::nextBatchCapacity(2, 16, fresh(16), lastRepair), 16u);  // 8 x 2: the most
+    EXPECT_EQ(RepairLoop::nextBatchCapacity(3, 12, fresh(12), lastRepair), 24u);
+    EXPECT_EQ(RepairLoop::nextBatchCapacity(2, 2, batch({{0, 2}, {4, 5}}), lastRepair), 2u);  // repairs 0 and 1 met
+    EXPECT_EQ(RepairLoop::nextBatchCapacity(2, 8, batch({{3, 1}}), lastRepair), 2u);
 }
 
 /* A repair that grew to every robot (the team's global problem failed around the others' paths) shares robots with

@@ -27,8 +27,8 @@ namespace ompl_parc
         core per worker. On a machine with fewer cores than workers it is a projection, and labelled so. */
     struct ParcStatistics
     {
-        unsigned int batches{0}, firstBatchSize{0}, batchedConflicts{0}, repairAttempts{0}, cancelledAttempts{0},
-            initialAttempts{0}, cancelledInitialAttempts{0};
+        unsigned int batches{0}, firstBatchSize{0}, largestBatch{0}, batchedConflicts{0}, repairAttempts{0},
+            cancelledAttempts{0}, initialAttempts{0}, cancelledInitialAttempts{0};
         double projectedInitial{0.}, projectedDetection{0.}, projectedResolution{0.};
     };
 }  // namespace ompl_parc

@@ -30,6 +30,11 @@ void ompl_parc::BatchDetector::configure(std::size_t horizon, std::size_t capaci
     optimistic_ = optimistic;
 }
 
+void ompl_parc::BatchDetector::setCapacity(std::size_t capacity)
+{
+    configure(horizon_, capacity, optimistic_);
+}
+
 void ompl_parc::BatchDetector::reset()
 {
     live_.resize(detector_.getPairCount());

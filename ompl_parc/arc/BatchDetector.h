@@ -49,6 +49,11 @@ namespace ompl_parc
             the pairs in play stay. Throws ompl::Exception for a zero horizon or capacity. */
         void configure(std::size_t horizon, std::size_t capacity, bool optimistic);
 
+        /** \brief A batch is full at \e capacity conflicts from the next detect() on (horizon and independence as
+            configured). Throws ompl::Exception for 0. */
+        void setCapacity(std::size_t capacity);
+        std::size_t getCapacity() const { return capacity_; }
+
         /** \brief Every pair in play again (a new query; the detector's frontiers are reset apart). */
         void reset();
 

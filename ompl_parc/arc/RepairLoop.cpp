@@ -43,7 +43,8 @@ ompl_parc::RepairLoop::RepairLoop(const MultiRobotProblem &problem, std::uint_fa
       seed_(seed),
       plan_(*problem.getSpaceInformation()),
       planned_(problem.getSpaceInformation()->getRobotCount(), 0),
-      workspace_(workspace)
+      workspace_(workspace),
+      lastRepair_(problem.getSpaceInformation()->getRobotCount(), -1)
 {
     if (&workspace.getDetector().getSpaceInformation() != problem.getSpaceInformation().get())
         throw ompl::Exception("RepairLoop", "the workspace is for another team");
@@ -61,6 +62,7 @@ void ompl_parc::RepairLoop::configure(RepairLoopOptions options)
     if (options.batchPerWorker == 0)
         throw ompl::Exception("RepairLoop", "a batch must hold at least one conflict per worker");
     workspace_.configure(options.workers, options.horizon, options.batchPerWorker, options.optimistic);
+    baseCapacity_ = capacity_ = workspace_.getBatchDetector().getCapacity();
     resolver_ =
         std::make_unique<ConflictResolver>(*problem_.getSpaceInformation(), options.settings, options.hierarchy);
     options_ = std::move(options);
@@ -132,6 +134,7 @@ bool ompl_parc::RepairLoop::resolve(const ob::PlannerTerminationCondition &ptc)
         DetectedBatch batch;
         {
             StageClock clock(statistics_.detectionWall, statistics_.detectionCpu);
+            workspace_.getBatchDetector().setCapacity(capacity_);
             batch = workspace_.getBatchDetector().detect(plan_, cache_, options_.settings.window, ptc);
         }
         parallel_.projectedDetection += batch.projectedSeconds;
@@ -148,6 +151,13 @@ bool ompl_parc::RepairLoop::resolve(const ob::PlannerTerminationCondition &ptc)
             parallel_.firstBatchSize = static_cast<unsigned int>(batch.entries.size());
         for (const BatchEntry &entry : batch.entries)
             statistics_.teamGrowths += entry.team.size() > 2 ? 1 : 0;
+        parallel_.largestBatch = std::max(parallel_.largestBatch, static_cast<unsigned int>(batch.entries.size()));
+        if (options_.growBatches && baseCapacity_ > 1)
+            capacity_ = nextBatchCapacity(baseCapacity_, capacity_, batch.entries, lastRepair_);
+        std::fill(lastRepair_.begin(), lastRepair_.end(), -1);
+        for (std::size_t k = 0; k < batch.entries.size(); ++k)
+            for (std::size_t r : batch.entries[k].team)
+                lastRepair_[r] = static_cast<int>(k);
         StageClock clock(statistics_.resolutionWall, statistics_.resolutionCpu);
         if (!repairBatch(batch.entries, ptc))
             return false;
@@ -233,6 +243,24 @@ bool ompl_parc::RepairLoop::repairBatch(const std::vector<BatchEntry> &batch,
         }
     }
     return all;
+}
+
+std::size_t ompl_parc::RepairLoop::nextBatchCapacity(std::size_t base, std::size_t current,
+                                                     const std::vector<BatchEntry> &batch,
+                                                     const std::vector<int> &lastRepair)
+{
+    const bool met = std::any_of(batch.begin(), batch.end(),
+                                 [&lastRepair](const BatchEntry &entry)
+                                 {
+                                     const int a = lastRepair[entry.conflict.first],
+                                               b = lastRepair[entry.conflict.second];
+                                     return a >= 0 && b >= 0 && a != b;
+                                 });
+    if (met)
+        return base;
+    if (batch.size() < current)
+        return current;
+    return std::min(2 * current, std::size_t{RepairLoopOptions::MAX_BATCH_GROWTH} * base);
 }
 
 void ompl_parc::RepairLoop::applyRepair(const Repair &repair)

@@ -34,6 +34,14 @@ namespace ompl_parc
             repairs are handed out as workers free up, so one slow repair no longer idles the other workers
             until the next batch. W = 1 keeps batches of one (ARC's earliest conflict). */
         unsigned int batchPerWorker{8};
+        /** \brief Batches grow while their repairs do not meet (W > 1): after a full batch none of whose conflicts
+            pairs robots of two different repairs of the batch before, the next may hold twice as many conflicts, up
+            to MAX_BATCH_GROWTH x W x batchPerWorker; a conflict between two such robots (concurrent repairs that did
+            not see each other) brings it back to W x batchPerWorker. Teams whose conflicts are far apart need fewer
+            batches (each waits for its last repair), dense ones keep small batches (an optimistic repair made stale by
+            another is wasted). */
+        bool growBatches{true};
+        static constexpr unsigned int MAX_BATCH_GROWTH = 8;
         /** \brief Optimistic (true) or strict batch independence; local OR multi-start of idle workers. */
         bool optimistic{true}, localOr{true};
         /** \brief Where the stages report their progress as they go (the planner's; none if null). */
@@ -79,6 +87,13 @@ namespace ompl_parc
             its states allocated at once and filled by all workers. */
         ompl::geometric::PathGeometricPtr buildSolutionPath() const;
 
+        /** \brief The capacity of the batch after \e batch when batches grow (RepairLoopOptions::growBatches):
+            \e base after a conflict of \e batch between robots of two different repairs of the batch before it
+            (\e lastRepair: per robot the index of its repair there, -1 for none), \e current after a batch that
+            was not full, else twice \e current, at most MAX_BATCH_GROWTH x \e base. */
+        static std::size_t nextBatchCapacity(std::size_t base, std::size_t current,
+                                             const std::vector<BatchEntry> &batch, const std::vector<int> &lastRepair);
+
         const MultiRobotPlan &getPlan() const { return plan_; }
         const ArcStatistics &getStatistics() const { return statistics_; }
         const ParcStatistics &getParallelStatistics() const { return parallel_; }
@@ -102,6 +117,10 @@ namespace ompl_parc
         std::unique_ptr<ConflictResolver> resolver_;
         ArcStatistics statistics_;
         ParcStatistics parallel_;
+        /** \brief The configured batch capacity (W x batchPerWorker, 1 for W = 1), the next batch's, and per robot the
+            index of its repair in the last batch (-1: none). */
+        std::size_t baseCapacity_{1}, capacity_{1};
+        std::vector<int> lastRepair_;
     };
 }  // namespace ompl_parc
 
