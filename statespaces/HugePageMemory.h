@@ -18,9 +18,10 @@ namespace ompl_parc
 
         A freed mapping is kept for the next buffer of the same mapped length (the newest first; at most KEPT_MAPPINGS
         of them and KEPT_BYTES in all, the oldest unmapped to make room): a fresh huge page is not only zeroed, on this
-        project's VMs its first touch took 5-13 ms in about half of the solves (the host backing it), and a planner
-        used in a loop (the benchmark tool, Python, a user's code) would pay that for its solution path's states at
-        every solve: Mobile Cross 256's path, 2 to 15 ms to allocate, 0.2-0.3 ms from kept mappings. */
+        project's VMs its first touch took 5-13 ms in some phases (4 of 6 solves in one run, none in another; the host
+        backing it), and a planner used in a loop (the benchmark tool, Python, a user's code) would pay that for its
+        solution path's states at every solve: Mobile Cross 256's path took 0.7-13 ms per worker to allocate, 0.2-0.3
+        ms from kept mappings. */
     class HugePageMemory
     {
       public:
