@@ -11,7 +11,8 @@ namespace ompl_parc
         of the robot pairs as they free up (the paper deals them round-robin), each scanning the next H timesteps
         (the synchronisation horizon)
         before the coordinator merges the candidates in temporal order into a batch of robot-disjoint
-        (optimistically) independent conflicts (ConflictBatch), up to W of them; the batch is repaired
+        (optimistically) independent conflicts (ConflictBatch), up to W of them in the paper, W x batch_per_worker
+        here, more while the batches' repairs do not meet (grow_batches); the batch is repaired
         concurrently with ARC's conflict resolution, idle workers running extra randomised attempts of
         unsolved tasks (local OR) whose first success cancels the rest. The RepairLoop does all of it; this
         shell declares its parameters. With W = 1 it computes exactly what ARC computes for the same seed. */
