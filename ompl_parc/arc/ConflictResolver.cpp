@@ -162,6 +162,7 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
     ResolveTrace &t = trace != nullptr ? *trace : local;
     t = ResolveTrace();
     Repair repair;
+    bool global = false;  // the rounds pose the team's global problem (a window before)
     std::vector<std::size_t> members = team;
     std::size_t lastStart = 0, lastEnd = 0;
     double sizeLength = 0.;  // the length of the first window of the size being tried
@@ -178,7 +179,7 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
     for (unsigned int k = 0; !ptc; ++k)
     {
         Subproblem sub;
-        if (repair.global)
+        if (global)
             sub = makeGlobal(plan, members, t.globalRounds);
         else
         {
@@ -193,7 +194,7 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
                 skipping && k > 0 && static_cast<double>(end - start) < settings_.minWindowGrowth * sizeLength;
             if (stuck || (start == 0 && end == latestArrival(plan, team)))
             {
-                repair.global = true;
+                global = true;
                 sub = makeGlobal(plan, members, t.globalRounds);
                 if (t.globalRounds == 0)  // later passes go on with the memories of the earlier global rounds
                     forget();
@@ -212,7 +213,7 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
                 t.expansions += k > 0 ? 1 : 0;
             }
         }
-        t.globalRounds += repair.global ? 1 : 0;
+        t.globalRounds += global ? 1 : 0;
         lastStart = sub.windowStart;
         lastEnd = sub.windowEnd;
         const auto posed = ompl::time::now();
@@ -230,7 +231,7 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
             const StopSignal::Scope scope(capped);
             // Memories belong to the team's global problem: a window (of a later pass) is posed afresh.
             const bool solved = solver->resume(si_, sub, capped, mixSeed(seed, t.calls), repair.patch,
-                                               repair.global ? memories[s].get() : nullptr);
+                                               global ? memories[s].get() : nullptr);
             t.longestCall = std::max(t.longestCall, ompl::time::seconds(ompl::time::now() - start));
             if (solved)
             {
@@ -240,11 +241,11 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
             }
         }
         const double spent = ompl::time::seconds(ompl::time::now() - posed);
-        t.globalSeconds += repair.global ? spent : 0.;
-        t.againSeconds += !repair.global && t.passes > 0 ? spent : 0.;
+        t.globalSeconds += global ? spent : 0.;
+        t.againSeconds += !global && t.passes > 0 ? spent : 0.;
         // The team's global problem failed around the other robots' fixed paths (a solver planned around them):
         // the next rounds plan every robot.
-        if (repair.global && usesContext_ && members.size() < si_.getRobotCount())
+        if (global && usesContext_ && members.size() < si_.getRobotCount())
         {
             members.resize(si_.getRobotCount());
             std::iota(members.begin(), members.end(), 0);
@@ -254,10 +255,10 @@ std::optional<ompl_parc::Repair> ompl_parc::ConflictResolver::resolve(
         // later passes have had no more time than the global rounds: a window that needed more than WINDOW_TRIES
         // seeds gets them, and the global problem, whose cap keeps doubling and whose solvers resume, at least half of
         // the time after the first pass.
-        if (repair.global && skipping && t.againSeconds <= t.globalSeconds)
+        if (global && skipping && t.againSeconds <= t.globalSeconds)
         {
             ++t.passes;
-            repair.global = false;
+            global = false;
             k = std::numeric_limits<unsigned int>::max();  // ++k: the first window again (a new size)
         }
     }

@@ -18,7 +18,6 @@ namespace ompl_parc
         Subproblem subproblem;
         Patch patch;
         std::string solver;
-        bool global{false};
     };
 
     /** \brief What one resolve() did, success or not: the statistics of a failed repair, and the longest

@@ -229,7 +229,8 @@ bool ompl_parc::RepairLoop::repairBatch(const std::vector<BatchEntry> &batch,
                 "patch of %zu timesteps",
                 statistics_.conflicts, conflict.first, conflict.second, conflict.timestep,
                 listed(batch[k].team).c_str(), repair->solver.c_str(), repair->subproblem.windowStart,
-                repair->subproblem.windowEnd, repair->global ? " (global)" : "", repair->patch.getDuration());
+                repair->subproblem.windowEnd, repair->subproblem.global ? " (global)" : "",
+                repair->patch.getDuration());
             applyRepair(*repair);
             for (std::size_t r : repair->subproblem.robots)
                 patched[r] = 1;
@@ -275,7 +276,7 @@ void ompl_parc::RepairLoop::applyRepair(const Repair &repair)
     if (sub.robots.size() < problem_.getRobotCount())
         cache_.add(sub.robots, sub.windowStart, sub.windowStart + duration);
     ++statistics_.repairs;
-    statistics_.globalRepairs += repair.global ? 1 : 0;
+    statistics_.globalRepairs += sub.global ? 1 : 0;
     ++statistics_.solverWins[repair.solver];
     if (options_.progress != nullptr)
     {
