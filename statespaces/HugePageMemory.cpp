@@ -1,11 +1,12 @@
 #include "ompl_parc/statespaces/HugePageMemory.h"
 
 #include <algorithm>
-#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <mutex>
+#include <vector>
 
 #ifdef __linux__
 #include <sys/mman.h>
@@ -35,22 +36,20 @@ namespace
     class KeptMappings
     {
       public:
+        KeptMappings() { kept_.reserve(HugePageMemory::KEPT_MAPPINGS); }
+
         /** The newest kept mapping of \e length bytes, or null. */
         void *take(std::size_t length)
         {
             const std::lock_guard<std::mutex> lock(mutex_);
-            for (std::size_t k = count_; k-- > 0;)
-                if (kept_[k].length == length)
-                {
-                    void *memory = kept_[k].memory;
-                    bytes_ -= length;
-                    std::copy(kept_.begin() + static_cast<std::ptrdiff_t>(k) + 1,
-                              kept_.begin() + static_cast<std::ptrdiff_t>(count_),
-                              kept_.begin() + static_cast<std::ptrdiff_t>(k));
-                    --count_;
-                    return memory;
-                }
-            return nullptr;
+            const auto newest = std::find_if(kept_.rbegin(), kept_.rend(),
+                                             [length](const Mapping &mapping) { return mapping.length == length; });
+            if (newest == kept_.rend())
+                return nullptr;
+            void *memory = newest->memory;
+            bytes_ -= length;
+            kept_.erase(std::next(newest).base());
+            return memory;
         }
 
         /** Keep \e memory (\e length bytes mapped), unmapping the oldest kept ones to make room; a mapping larger
@@ -63,17 +62,13 @@ namespace
                 return;
             }
             const std::lock_guard<std::mutex> lock(mutex_);
-            std::size_t evicted = 0;
-            while (count_ - evicted == HugePageMemory::KEPT_MAPPINGS || bytes_ + length > HugePageMemory::KEPT_BYTES)
+            while (kept_.size() == HugePageMemory::KEPT_MAPPINGS || bytes_ + length > HugePageMemory::KEPT_BYTES)
             {
-                munmap(kept_[evicted].memory, kept_[evicted].length);
-                bytes_ -= kept_[evicted].length;
-                ++evicted;
+                munmap(kept_.front().memory, kept_.front().length);
+                bytes_ -= kept_.front().length;
+                kept_.erase(kept_.begin());
             }
-            std::copy(kept_.begin() + static_cast<std::ptrdiff_t>(evicted),
-                      kept_.begin() + static_cast<std::ptrdiff_t>(count_), kept_.begin());
-            count_ -= evicted;
-            kept_[count_++] = {memory, length};
+            kept_.push_back({memory, length});  // within the capacity reserved: never allocates
             bytes_ += length;
         }
 
@@ -84,8 +79,8 @@ namespace
             std::size_t length;
         };
         std::mutex mutex_;
-        std::array<Mapping, HugePageMemory::KEPT_MAPPINGS> kept_{};
-        std::size_t count_{0}, bytes_{0};
+        std::vector<Mapping> kept_;  // oldest first
+        std::size_t bytes_{0};
     };
 
     /** The process's kept mappings; never destroyed (a buffer may be freed while statics are destroyed). */
