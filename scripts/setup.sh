@@ -5,7 +5,7 @@ set -euo pipefail
 
 PACKAGES=(
     build-essential cmake pkg-config
-    libompl-dev libfcl-dev libccd-dev liburdfdom-dev libeigen3-dev libxsimd-dev
+    libompl-dev libfcl-dev libccd-dev liburdfdom-dev libtinyxml-dev libeigen3-dev libxsimd-dev
     libboost-dev libboost-program-options-dev libboost-serialization-dev
     libboost-filesystem-dev libboost-system-dev
     nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev

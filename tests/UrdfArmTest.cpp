@@ -207,6 +207,112 @@ TEST(UrdfArm, HostileUrdfsAreRefusedWithoutHangingOrOverflowing)
     EXPECT_EQ(arm.getDimension(), 2u);
 }
 
+namespace
+{
+    /** The small arm with link \e link's (0: base, 1: upper, 2: lower) <collision> element replaced by \e collision. */
+    std::string smallArmWithCollision(int link, const std::string &collision)
+    {
+        std::string urdf = smallArm();
+        std::size_t at = 0;
+        for (int k = 0; k <= link; ++k)
+            at = urdf.find("<collision>", at + (k == 0 ? 0 : 1));
+        const std::size_t end = urdf.find("</collision>", at) + std::string("</collision>").size();
+        return urdf.replace(at, end - at, collision);
+    }
+
+    /** Collision elements urdfdom cannot read in full: every shape with each attribute value that is not a
+        positive finite number in plain notation, with too few or too many numbers, missing, unknown shapes,
+        no or two geometries or shapes, and origins that are not three finite numbers. */
+    std::vector<std::string> unreadableCollisions()
+    {
+        const std::vector<std::string> badNumbers = {"nan", "NaN", "inf", "-inf", "1e999",   "-1e999", "0.2abc", "abc",
+                                                     "",    " ",   "0x1", "1,5",  "0.1 0.2", "--1",    "1e",     "."};
+        const auto wrap = [](const std::string &geometry, const std::string &origin = "")
+        { return "<collision>" + origin + "<geometry>" + geometry + "</geometry></collision>"; };
+        std::vector<std::string> out;
+        for (const std::string &v : badNumbers)
+        {
+            out.push_back(wrap("<sphere radius=\"" + v + "\"/>"));
+            out.push_back(wrap("<cylinder radius=\"" + v + "\" length=\"0.3\"/>"));
+            out.push_back(wrap("<cylinder radius=\"0.1\" length=\"" + v + "\"/>"));
+            out.push_back(wrap("<box size=\"" + v + " 0.1 0.1\"/>"));
+            out.push_back(wrap("<box size=\"0.1 0.1 " + v + "\"/>"));
+            out.push_back(wrap("<sphere radius=\"0.1\"/>", "<origin xyz=\"" + v + " 0 0\"/>"));
+            out.push_back(wrap("<sphere radius=\"0.1\"/>", "<origin rpy=\"0 " + v + " 0\"/>"));
+        }
+        for (const std::string &size : {"0.1 0.1", "0.1", "0.1 0.1 0.1 0.1", ""})
+            out.push_back(wrap("<box size=\"" + std::string(size) + "\"/>"));
+        for (const std::string &xyz : {"1 0", "1 0 0 0", "1", "a b c"})
+            out.push_back(wrap("<sphere radius=\"0.1\"/>", "<origin xyz=\"" + std::string(xyz) + "\"/>"));
+        for (const std::string &shape : {"<capsule radius=\"0.1\" length=\"0.2\"/>", "<cone radius=\"0.1\"/>",
+                                         "<sphere/>", "<cylinder radius=\"0.1\"/>", "<cylinder length=\"0.1\"/>",
+                                         "<box/>", "", "<sphere radius=\"0.1\"/><box size=\"1 1 1\"/>"})
+            out.push_back(wrap(shape));
+        out.push_back("<collision></collision>");
+        out.push_back("<collision><origin xyz=\"0 0 0\"/></collision>");
+        out.push_back(
+            "<collision><geometry><sphere radius=\"0.1\"/></geometry><geometry><box size=\"1 1 1\"/>"
+            "</geometry></collision>");
+        out.push_back(
+            "<collision><origin xyz=\"0 0 0\"/><origin xyz=\"1 0 0\"/><geometry><sphere radius=\"0.1\"/>"
+            "</geometry></collision>");
+        // Readable, but no volume: refused as non-positive (a negative size is not a smaller shape).
+        for (const std::string &v : {"0", "-0.1", "1e-400"})
+        {
+            out.push_back(wrap("<sphere radius=\"" + v + "\"/>"));
+            out.push_back(wrap("<box size=\"0.1 " + v + " 0.1\"/>"));
+        }
+        return out;
+    }
+}  // namespace
+
+TEST(UrdfArm, EveryUrdfWithAnUnreadableCollisionElementIsRefused)
+{
+    // The control: the readable element each case below breaks is accepted on every link.
+    for (int link = 0; link < 3; ++link)
+        EXPECT_NO_THROW(UrdfArm("arm", nullptr,
+                                smallArmWithCollision(link,
+                                                      "<collision><origin xyz=\"0 0 0.1\" rpy=\"0 0.5 0\"/>"
+                                                      "<geometry><sphere radius=\"0.05\"/></geometry>"
+                                                      "</collision>"),
+                                "base", "tip", Eigen::Isometry3d::Identity()));
+    const auto cases = unreadableCollisions();
+    ASSERT_GT(cases.size(), 130u);
+    std::size_t refused = 0;
+    for (int link = 0; link < 3; ++link)
+        for (const std::string &collision : cases)
+        {
+            try
+            {
+                UrdfArm("arm", nullptr, smallArmWithCollision(link, collision), "base", "tip",
+                        Eigen::Isometry3d::Identity());
+                ADD_FAILURE() << "accepted link " << link << " with " << collision;
+            }
+            catch (const ompl::Exception &e)
+            {
+                ++refused;
+                EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+            }
+        }
+    EXPECT_EQ(refused, 3 * cases.size());
+}
+
+TEST(UrdfArm, MimicJointsAndNonFiniteJointsAreRefused)
+{
+    expectError(
+        smallArm("revolute", "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/><mimic joint=\"j1\"/>"),
+        "joint 'j2' mimics joint 'j1'");
+    for (const std::string &v : {"nan", "inf", "1e999", "0.5x"})
+    {
+        SCOPED_TRACE(v);
+        EXPECT_THROW(
+            UrdfArm("arm", nullptr,
+                    smallArm("revolute", "<limit lower=\"-1\" upper=\"" + v + "\" effort=\"1\" velocity=\"1\"/>"),
+                    "base", "tip", Eigen::Isometry3d::Identity()),
+            ompl::Exception);
+    }
+}
+
 TEST(UrdfArm, ABasePoseThatPutsAFixedLinkIntoAnObstacleNamesBoth)
 {
     // The small arm's base sphere (radius 0.1, never moving) 0.15 from a box's face: fine at 0.15, not at 0.05.

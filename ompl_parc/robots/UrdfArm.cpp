@@ -6,6 +6,7 @@
 
 #include <console_bridge/console.h>
 #include <ompl/util/Exception.h>
+#include <tinyxml.h>
 #include <urdf_parser/urdf_parser.h>
 
 #include <Eigen/Dense>
@@ -69,6 +70,42 @@ namespace
         return t;
     }
 
+    /** Refuses a `<collision>` element whose geometry urdfdom would read only in part: urdfdom takes the first
+        shape of a `<geometry>` and the first `<geometry>` of a `<collision>` and drops the rest without a word.
+        (Elements it cannot read at all it reports as errors, which parseChain() refuses.) */
+    void checkCollisionElements(const std::string &urdfXml)
+    {
+        TiXmlDocument document;
+        document.Parse(urdfXml.c_str());
+        const TiXmlElement *robot = document.RootElement();
+        if (document.Error() || robot == nullptr)
+            return;  // urdfdom reports it
+        // Child elements of \e parent named \e name (any name if null).
+        const auto count = [](const TiXmlElement &parent, const char *name)
+        {
+            int n = 0;
+            for (const TiXmlElement *e = parent.FirstChildElement(); e != nullptr; e = e->NextSiblingElement())
+                n += name == nullptr || e->ValueStr() == name;
+            return n;
+        };
+        for (const TiXmlElement *link = robot->FirstChildElement("link"); link != nullptr;
+             link = link->NextSiblingElement("link"))
+            for (const TiXmlElement *collision = link->FirstChildElement("collision"); collision != nullptr;
+                 collision = collision->NextSiblingElement("collision"))
+            {
+                const char *name = link->Attribute("name");
+                const std::string where = "link '" + std::string(name != nullptr ? name : "") + "'";
+                if (count(*collision, "geometry") != 1 || count(*collision, "origin") > 1)
+                    throw ompl::Exception(CONTEXT, "malformed URDF: " + where +
+                                                       " has a <collision> without exactly one <geometry> (or with "
+                                                       "two <origin>s)");
+                if (count(*collision->FirstChildElement("geometry"), nullptr) != 1)
+                    throw ompl::Exception(CONTEXT, "malformed URDF: " + where +
+                                                       " has a <collision> whose <geometry> does not hold exactly "
+                                                       "one shape");
+            }
+    }
+
     /** urdfdom's links own their child links (shared_ptr): the joints of a URDF that loop (refused below) make a
         cycle of owners that would never be freed. Clears every link's children when the parse is done with the
         model, normally or by an exception. */
@@ -94,6 +131,8 @@ namespace
         ompl_parc::Obstacle shape;
         shape.name = link.name;
         shape.pose = linkPose * toIsometry(collision.origin);
+        if (!shape.pose.matrix().allFinite())
+            throw ompl::Exception(CONTEXT, "link '" + link.name + "' has a <collision> with a non-finite <origin>");
         const auto *geometry = collision.geometry.get();
         if (geometry == nullptr)
             throw ompl::Exception(CONTEXT, "link '" + link.name + "' has a <collision> without <geometry>");
@@ -181,11 +220,15 @@ ompl_parc::UrdfArm::Chain ompl_parc::UrdfArm::parseChain(const std::string &urdf
         {
             throw ompl::Exception(CONTEXT, std::string("malformed URDF: ") + e.what());
         }
-        if (!model)
+        // urdfdom drops an element it cannot read (a <collision> whose radius is "nan", an unknown shape, a
+        // box of two sizes) with an error message and goes on: a link would silently lose its collision body.
+        // Every error it reports refuses the URDF.
+        if (!model || !errors.first().empty())
             throw ompl::Exception(
                 CONTEXT, "malformed URDF: " +
                              (errors.first().empty() ? std::string("urdfdom could not parse it") : errors.first()));
     }
+    checkCollisionElements(urdfXml);
     const auto base = model->getLink(baseLink), tip = model->getLink(tipLink);
     if (!base)
         throw ompl::Exception(CONTEXT, "URDF '" + model->getName() + "' has no base link '" + baseLink + "'");
@@ -214,6 +257,12 @@ ompl_parc::UrdfArm::Chain ompl_parc::UrdfArm::parseChain(const std::string &urdf
     for (const urdf::Joint *joint : joints)
     {
         pending = pending * toIsometry(joint->parent_to_joint_origin_transform);
+        if (!pending.matrix().allFinite())
+            throw ompl::Exception(CONTEXT, "joint '" + joint->name + "' has a non-finite <origin>");
+        if (joint->mimic)
+            throw ompl::Exception(CONTEXT, "joint '" + joint->name + "' mimics joint '" + joint->mimic->joint_name +
+                                               "': mimic joints are not supported (planning it as an independent "
+                                               "joint would be wrong)");
         if (joint->type != urdf::Joint::FIXED)
         {
             if (joint->type == urdf::Joint::REVOLUTE)
@@ -222,6 +271,8 @@ ompl_parc::UrdfArm::Chain ompl_parc::UrdfArm::parseChain(const std::string &urdf
                     throw ompl::Exception(CONTEXT, "revolute joint '" + joint->name + "' has no <limit>");
                 if (!(joint->limits->lower < joint->limits->upper))
                     throw ompl::Exception(CONTEXT, "revolute joint '" + joint->name + "' has an empty <limit>");
+                if (!std::isfinite(joint->limits->lower) || !std::isfinite(joint->limits->upper))
+                    throw ompl::Exception(CONTEXT, "revolute joint '" + joint->name + "' has a non-finite <limit>");
                 low.push_back(joint->limits->lower);
                 high.push_back(joint->limits->upper);
             }
@@ -234,8 +285,8 @@ ompl_parc::UrdfArm::Chain ompl_parc::UrdfArm::parseChain(const std::string &urdf
                 throw ompl::Exception(CONTEXT,
                                       "joint '" + joint->name + "' is not revolute, continuous or fixed (unsupported)");
             const Eigen::Vector3d axis(joint->axis.x, joint->axis.y, joint->axis.z);
-            if (!(axis.norm() > 1e-9))
-                throw ompl::Exception(CONTEXT, "joint '" + joint->name + "' has a zero <axis>");
+            if (!axis.allFinite() || !(axis.norm() > 1e-9))
+                throw ompl::Exception(CONTEXT, "joint '" + joint->name + "' has a zero or non-finite <axis>");
             chain.offsets.push_back(pending);
             chain.axes.push_back(axis.normalized());
             chain.names.push_back(joint->name);
