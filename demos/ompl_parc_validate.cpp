@@ -22,7 +22,8 @@ int main(int argc, char **argv)
             po::options_description options("Usage: ompl_parc_validate [options] SOLUTION.json\nOptions");
             tools::addProblemOptions(options);
             options.add_options()("substeps", po::value<std::string>()->default_value("4"),
-                                  "fewest samples per timestep interval between timesteps (1: timesteps only)")(
+                                  "fewest samples per timestep interval (more where the motion needs them: every "
+                                  "instant between timesteps is checked whatever this is)")(
                 "threads", po::value<std::string>()->default_value("0"), "threads of the check (0: one per core)")(
                 "solution", po::value<std::string>(), "solution file");
             po::positional_options_description positional;
@@ -51,8 +52,8 @@ int main(int argc, char **argv)
             }
             std::cout << "valid: " << plan.getRobotCount() << " robots, makespan " << plan.getMakespan()
                       << " timesteps, sum of costs " << plan.getSumOfCosts() << ", " << report.configurationsChecked
-                      << " configurations checked (file read in " << readTime << " s, checked in " << checkTime
-                      << " s)" << std::endl;
+                      << " configurations checked (file read in " << readTime << " s, checked in " << checkTime << " s)"
+                      << std::endl;
             return static_cast<int>(tools::EXIT_SOLVED);
         });
 }

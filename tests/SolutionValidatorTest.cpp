@@ -136,12 +136,15 @@ TEST(SolutionValidator, TunnellingBetweenTimestepsIsCaughtBySamples)
     MultiRobotPlan plan(*problem.getSpaceInformation());
     plan.setRobotPath(0, {-0.7, 0., 0.7, 0.});
     plan.setRobotPath(1, {5., -5.});
-    ValidationOptions onlyTimesteps;
-    onlyTimesteps.substeps = 1;
-    EXPECT_TRUE(SolutionValidator(problem, onlyTimesteps).validate(plan).valid);
-    const auto report = SolutionValidator(problem).validate(plan);
-    EXPECT_FALSE(report.valid);
-    EXPECT_EQ(report.message, "t=0.5 (sub-step): robot 'a' hits obstacle 'wall'");
+    // Every value of the option checks between timesteps: substeps is only the fewest samples.
+    for (unsigned int substeps : {0u, 1u, 2u, 4u})
+    {
+        ValidationOptions options;
+        options.substeps = substeps;
+        EXPECT_EQ(SolutionValidator(problem, options).validate(plan).message,
+                  "t=0.5 (sub-step): robot 'a' hits obstacle 'wall'")
+            << substeps;
+    }
 }
 
 namespace
@@ -159,7 +162,8 @@ namespace
         std::vector<std::vector<double>> starts, goals;
         for (std::size_t i = 0; i < paths.size(); ++i)
         {
-            team.push_back(std::make_shared<DiscRobot>(std::string(1, static_cast<char>('a' + i)), env, radius, bounds));
+            team.push_back(
+                std::make_shared<DiscRobot>(std::string(1, static_cast<char>('a' + i)), env, radius, bounds));
             starts.push_back({paths[i][0], paths[i][1]});
             goals.push_back({paths[i][paths[i].size() - 2], paths[i].back()});
         }
@@ -182,10 +186,7 @@ TEST(SolutionValidator, TunnellingThroughAThinWallIsRejected)
     const std::vector<std::vector<double>> paths = {{-0.003, 1., 0.0048, 1.}, {5., 5.}};
     const auto problem = tinyDiscs(0.001, 1e-4, paths);
     const auto plan = planOf(problem, paths);
-    ValidationOptions onlyTimesteps;
-    onlyTimesteps.substeps = 1;
-    EXPECT_TRUE(SolutionValidator(problem, onlyTimesteps).validate(plan).valid);
-    for (unsigned int substeps : {2u, 4u, 16u})
+    for (unsigned int substeps : {0u, 1u, 2u, 4u, 16u})
     {
         ValidationOptions options;
         options.substeps = substeps;
@@ -201,9 +202,54 @@ TEST(SolutionValidator, TunnellingThroughAnotherRobotIsRejected)
     // Two discs of radius 0.001 swap sides of each other on one line within one timestep.
     const std::vector<std::vector<double>> paths = {{4.995, 3., 5.0028, 3.}, {5.005, 3., 4.9972, 3.}};
     const auto problem = tinyDiscs(0.001, 1e-4, paths);
-    const auto report = SolutionValidator(problem).validate(planOf(problem, paths));
+    for (unsigned int substeps : {0u, 1u, 4u})
+    {
+        ValidationOptions options;
+        options.substeps = substeps;
+        const auto report = SolutionValidator(problem, options).validate(planOf(problem, paths));
+        EXPECT_FALSE(report.valid) << substeps;
+        EXPECT_NE(report.message.find("(sub-step): robots 'a' and 'b' collide"), std::string::npos) << report.message;
+    }
+}
+
+TEST(SolutionValidator, OptionsThatWouldSwitchTheCheckBetweenTimestepsOffAreRefused)
+{
+    const auto problem = tinyDiscs(0.1, 0.2, {{1., 1.}, {5., 5.}});
+    for (double slack : {0., std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()})
+    {
+        ValidationOptions options;
+        options.substepSlack = slack;
+        EXPECT_THROW(SolutionValidator(problem, options), std::invalid_argument) << slack;
+    }
+    ValidationOptions negative;
+    negative.contactTolerance = -1.;
+    EXPECT_THROW(SolutionValidator(problem, negative), std::invalid_argument);
+}
+
+TEST(SolutionValidator, LongWaitsCostTheirPiecesNotTheirTimesteps)
+{
+    // Robot a waits 9 million timesteps, then crosses the wall's line beside it; robot b waits, then crosses
+    // through a, hopping a little each timestep: found at the end of the waits, after a check that skips them.
+    const std::size_t wait = 9000000;
+    const double a0[2] = {-5., 5.}, a1[2] = {-4.995, 5.}, b0[2] = {-5., 6.}, b1[2] = {-5., 4.};
+    TimedPath a(2, a0), b(2, b0);
+    a.appendHold(a0, wait);
+    a.appendMotion(a0, a1, 1);
+    b.appendHold(b0, wait);
+    b.appendMotion(b0, b1, 256);  // 1/128 per timestep
+    MultiRobotPlan plan(std::vector<unsigned int>{2, 2}, 128.);
+    plan.setPath(0, a);
+    plan.setPath(1, b);
+    const auto problem = tinyDiscs(0.1, 0.2, {{-5., 5., -4.995, 5.}, {-5., 6., -5., 4.}});
+    const auto report = SolutionValidator(problem).validate(plan);
     EXPECT_FALSE(report.valid);
-    EXPECT_NE(report.message.find("(sub-step): robots 'a' and 'b' collide"), std::string::npos) << report.message;
+    EXPECT_NE(report.message.find("robots 'a' and 'b' collide"), std::string::npos) << report.message;
+    EXPECT_GT(std::stod(report.message.substr(2)), static_cast<double>(wait) + 64.) << report.message;
+    // Past the largest timestep a plan may have, the plan is refused before any check.
+    TimedPath late(2, b0);
+    late.appendHold(b0, MultiRobotPlan::MAX_TIMESTEP + 1);
+    plan.setPath(1, late);
+    EXPECT_NE(SolutionValidator(problem).validate(plan).message.find("beyond the largest timestep"), std::string::npos);
 }
 
 TEST(SolutionValidator, GrazingBetweenTimestepsIsTolerated)

@@ -20,6 +20,13 @@ namespace ompl_parc
     class MultiRobotPlan
     {
       public:
+        /** \brief The latest timestep a plan may have (solution files, the validator; a team whose bounds need
+            more to be crossed once is refused): 10^8, room for the largest teams the tools accept (Mobile
+            Cross 256's makespan is 1.7 x 10^5 and grows linearly with the team), and a bound on what a crafted
+            file can make the validator do (its time grows with the pieces and the timesteps in which robots
+            move close to each other or to an obstacle). */
+        static constexpr std::size_t MAX_TIMESTEP = 100000000;
+
         MultiRobotPlan() = default;
         /** \brief An empty plan (no states yet) for a team with these configuration sizes. */
         MultiRobotPlan(std::vector<unsigned int> dimensions, double resolution);
@@ -100,8 +107,7 @@ namespace ompl_parc
                                                   const ompl::geometric::PathGeometric &path);
 
         /** \brief Lay a single-robot path (over \e robot's own space) on the grid, as above. */
-        static TimedPath discretize(const Robot &robot, const ompl::geometric::PathGeometric &path,
-                                    double resolution);
+        static TimedPath discretize(const Robot &robot, const ompl::geometric::PathGeometric &path, double resolution);
 
       private:
         std::vector<TimedPath> paths_;

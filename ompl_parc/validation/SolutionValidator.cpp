@@ -105,15 +105,15 @@ namespace
     {
       public:
         TimeSweep(const ompl_parc::MultiRobotSpaceInformation &si, const ompl_parc::ValidationOptions &options,
-                  const std::vector<ompl_parc::DisplacementBound> &displacement, const std::vector<LinearMotion> &motions,
-                  std::size_t makespan)
-          : si_(si)
-          , options_(options)
-          , displacement_(displacement)
-          , motions_(motions)
-          , makespan_(makespan)
-          , n_(motions.size())
-          , pool_(options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency()))
+                  const std::vector<ompl_parc::DisplacementBound> &displacement,
+                  const std::vector<LinearMotion> &motions, std::size_t makespan)
+            : si_(si),
+              options_(options),
+              displacement_(displacement),
+              motions_(motions),
+              makespan_(makespan),
+              n_(motions.size()),
+              pool_(options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency()))
         {
             std::vector<ompl_parc::CollisionBody> templates(n_);
             for (std::size_t i = 0; i < n_; ++i)
@@ -137,36 +137,38 @@ namespace
                 {
                     for (unsigned int d = 0; d < motion.getDimension(); ++d)
                         dq[d] = motion.getEnd(p)[d] - motion.getStart(p)[d];
-                    steps_[i][p] = displacement[i](dq.data()) /
-                                   static_cast<double>(motion.getEndTime(p) - motion.getStartTime(p));
+                    steps_[i][p] =
+                        displacement[i](dq.data()) / static_cast<double>(motion.getEndTime(p) - motion.getStartTime(p));
                 }
                 sphere_.push_back(displacement[i].isTranslation() && templates[i].size() == 1 &&
                                           templates[i].ax_[0] == templates[i].bx_[0] &&
                                           templates[i].ay_[0] == templates[i].by_[0] &&
-                                          templates[i].az_[0] == templates[i].bz_[0] ?
-                                      templates[i].radius_[0] :
-                                      -1.);
+                                          templates[i].az_[0] == templates[i].bz_[0]
+                                      ? templates[i].radius_[0]
+                                      : -1.);
             }
             for (unsigned int w = 0; w < pool_.getWorkerCount(); ++w)
                 workers_.push_back(std::make_unique<Worker>(si, templates, n_));
+            listEventfulBlocks();
             for (std::size_t o = 0; o < workers_[0]->fcl.getObstacleCount(); ++o)
             {
                 const auto &b = workers_[0]->fcl.getObstacleBox(o);
-                obstacleBoxes_.push_back(Box{{b.min().x(), b.min().y(), b.min().z()}, {b.max().x(), b.max().y(), b.max().z()}});
+                obstacleBoxes_.push_back(
+                    Box{{b.min().x(), b.min().y(), b.min().z()}, {b.max().x(), b.max().y(), b.max().z()}});
             }
         }
 
         /** The earliest collision at a time before \e limit, if any; counts narrow-phase configurations. */
         std::optional<Event> run(double limit, std::size_t &checked)
         {
-            const std::size_t blocks = std::max<std::size_t>(1, (makespan_ + BLOCK - 1) / BLOCK);
+            const std::size_t blocks = eventful_.size();
             std::optional<Event> best;
-            for (std::size_t first = 0; first < blocks && !best && static_cast<double>(first * BLOCK) <= limit;
-                 first += ROUND)
+            for (std::size_t first = 0;
+                 first < blocks && !best && static_cast<double>(blockStart(eventful_[first])) <= limit; first += ROUND)
             {
                 const std::size_t count = std::min(ROUND, blocks - first);
-                computeBoxes(first, count);
-                std::vector<Candidate> candidates = collectCandidates(first, count);
+                computeBoxes(&eventful_[first], count);
+                std::vector<Candidate> candidates = collectCandidates(&eventful_[first], count);
                 std::atomic<std::size_t> next{0};
                 pool_.run(
                     [&](unsigned int w)
@@ -197,7 +199,7 @@ namespace
         {
             Worker(const ompl_parc::MultiRobotSpaceInformation &si,
                    const std::vector<ompl_parc::CollisionBody> &templates, std::size_t n)
-              : fcl(si, templates), order(n)
+                : fcl(si, templates), order(n)
             {
             }
             ompl_parc::FclBodies fcl;
@@ -211,9 +213,26 @@ namespace
         std::size_t blockStart(std::size_t block) const { return block * BLOCK; }
         std::size_t blockEnd(std::size_t block) const { return std::min(makespan_, (block + 1) * BLOCK); }
 
+        /** The blocks in which some robot moves (or moved in the interval before), and block 0: in every other
+            block no robot is active, so it has nothing to test (everything there was tested at the timestep
+            before it). Skipping them makes the check's time follow the pieces, not the makespan: a robot that
+            waits for a million timesteps costs one piece. */
+        void listEventfulBlocks()
+        {
+            eventful_ = {0};
+            for (const LinearMotion &motion : motions_)
+                for (std::size_t p = 0; p < motion.getPieceCount(); ++p)
+                    if (!motion.isStill(p))
+                        for (std::size_t k = motion.getStartTime(p) / BLOCK; k <= motion.getEndTime(p) / BLOCK + 1; ++k)
+                            if (blockStart(k) < std::max<std::size_t>(makespan_, 1))
+                                eventful_.push_back(k);
+            std::sort(eventful_.begin(), eventful_.end());
+            eventful_.erase(std::unique(eventful_.begin(), eventful_.end()), eventful_.end());
+        }
+
         /** Per robot and block of the round, a box around its body at every instant of the block, and whether
             it moves in the block or in the interval before (if not, every test of its was done before). */
-        void computeBoxes(std::size_t first, std::size_t count)
+        void computeBoxes(const std::size_t *blocks, std::size_t count)
         {
             boxes_.assign(count * n_, Box());
             active_.assign(count * n_, 0);
@@ -223,7 +242,7 @@ namespace
                     Worker &worker = *workers_[w];
                     for (std::size_t i = w; i < n_; i += pool_.getWorkerCount())
                         for (std::size_t k = 0; k < count; ++k)
-                            computeBox(i, first + k, worker, boxes_[k * n_ + i], active_[k * n_ + i]);
+                            computeBox(i, blocks[k], worker, boxes_[k * n_ + i], active_[k * n_ + i]);
                 });
         }
 
@@ -277,7 +296,7 @@ namespace
 
         /** Tests the boxes leave for the round's blocks: robot-obstacle, self and robot-robot (sweep and prune
             along x), each only if a robot in it is active. */
-        std::vector<Candidate> collectCandidates(std::size_t first, std::size_t count)
+        std::vector<Candidate> collectCandidates(const std::size_t *blocks, std::size_t count)
         {
             std::vector<std::vector<Candidate>> found(pool_.getWorkerCount());
             pool_.run(
@@ -294,9 +313,9 @@ namespace
                                 continue;
                             for (std::size_t o = 0; o < obstacleBoxes_.size(); ++o)
                                 if (boxes[i].overlaps(obstacleBoxes_[o]))
-                                    found[w].push_back({first + k, Kind::OBSTACLE, i, o});
+                                    found[w].push_back({blocks[k], Kind::OBSTACLE, i, o});
                             if (!si_.getRobot(i)->getSelfCollisionPairs().empty())
-                                found[w].push_back({first + k, Kind::SELF, i, i});
+                                found[w].push_back({blocks[k], Kind::SELF, i, i});
                         }
                         auto &order = worker.order;
                         for (std::size_t i = 0; i < n_; ++i)
@@ -308,7 +327,7 @@ namespace
                             {
                                 const std::size_t i = order[x], j = order[y];
                                 if ((active[i] || active[j]) && boxes[i].overlaps(boxes[j]))
-                                    found[w].push_back({first + k, Kind::PAIR, std::min(i, j), std::max(i, j)});
+                                    found[w].push_back({blocks[k], Kind::PAIR, std::min(i, j), std::max(i, j)});
                             }
                     }
                 });
@@ -383,7 +402,6 @@ namespace
             // Displacement of one body relative to the other over a timestep. Two links of one arm move relative
             // to each other only by the joints between them, which da bounds: each side takes half the growth.
             const double total = pair ? da + db : da;
-            const bool between = options_.substeps > 1;
             // The growths (ga + gb, or twice ga for self) add up to total/2m: within half the slack.
             const auto m = static_cast<unsigned int>(
                 std::max<double>(options_.substeps, std::ceil(total / options_.substepSlack)));
@@ -395,8 +413,6 @@ namespace
                     continue;
                 if (auto event = checkSample(c, static_cast<double>(t), false, pa, pb, worker))
                     return event;
-                if (!between)
-                    continue;
                 for (unsigned int j = ends ? 0 : 1; j <= (ends ? m : m - 1); ++j)
                 {
                     const double u = static_cast<double>(t) + static_cast<double>(j) / m;
@@ -490,6 +506,8 @@ namespace
         std::vector<std::vector<double>> steps_;
         std::vector<Box> boxes_, obstacleBoxes_;
         std::vector<char> active_;
+        /** The blocks to check, in increasing order (listEventfulBlocks()). */
+        std::vector<std::size_t> eventful_;
     };
 
     /** The earliest timestep a robot is out of bounds: bounds are boxes, so a piece with both ends inside
@@ -562,14 +580,22 @@ namespace
 }  // namespace
 
 ompl_parc::SolutionValidator::SolutionValidator(MultiRobotProblem problem, ValidationOptions options)
-  : problem_(std::move(problem)), options_(options)
+    : problem_(std::move(problem)), options_(options)
 {
+    // Every instant between timesteps is checked whatever the options: substeps is only the fewest samples.
     if (options_.substeps == 0)
         options_.substeps = 1;
     if (options_.substepSlack < 0.)
         options_.substepSlack = 0.5 / problem_.getSpaceInformation()->getResolution();
-    if (!(options_.substepSlack > 0.) && options_.substeps > 1)
-        throw std::invalid_argument("SolutionValidator: the check between timesteps needs a positive substepSlack");
+    if (!(options_.substepSlack > 0.) || !std::isfinite(options_.substepSlack))
+        throw std::invalid_argument(
+            "SolutionValidator: the check between timesteps needs a positive, finite "
+            "substepSlack");
+    if (!(options_.contactTolerance >= 0.) || !std::isfinite(options_.contactTolerance) ||
+        !(options_.endpointTolerance >= 0.) || !std::isfinite(options_.endpointTolerance))
+        throw std::invalid_argument(
+            "SolutionValidator: contactTolerance and endpointTolerance must be finite and "
+            "not negative");
     const auto &si = *problem_.getSpaceInformation();
     for (std::size_t i = 0; i < si.getRobotCount(); ++i)
         displacement_.emplace_back(*si.getRobot(i));
@@ -591,6 +617,9 @@ std::string ompl_parc::SolutionValidator::checkStructure(const MultiRobotPlan &p
         if (plan.getStateCount(i) == 0)
             return "robot '" + si.getRobot(i)->getName() + "' has no states";
     }
+    if (plan.getMakespan() > MultiRobotPlan::MAX_TIMESTEP)
+        return "plan's makespan " + std::to_string(plan.getMakespan()) + " is beyond the largest timestep accepted (" +
+               std::to_string(MultiRobotPlan::MAX_TIMESTEP) + ")";
     return "";
 }
 

@@ -15,10 +15,11 @@ namespace ompl_parc
     {
         /** \brief Largest per-coordinate difference accepted between a path end and its start/goal. */
         double endpointTolerance{1e-6};
-        /** \brief Fewest samples per timestep interval of the check between timesteps (more are taken where the
-            motion needs them to cover every instant); 1 checks the timesteps only. */
+        /** \brief Fewest samples per timestep interval of the check between timesteps; more are taken where the
+            motion needs them to cover every instant, so no value (0 and 1 included) switches that check off. */
         unsigned int substeps{4};
-        /** \brief Radius reduction between timesteps; negative means half a timestep (0.5/resolution).
+        /** \brief Radius reduction between timesteps; negative means half a timestep (0.5/resolution); zero
+            or not finite is refused.
             The plan's guarantee is collision-freedom at timesteps; between them grazing overlaps far
             below a timestep are expected, tunnelling through a robot or obstacle is not. */
         double substepSlack{-1.};
@@ -67,7 +68,8 @@ namespace ompl_parc
     class SolutionValidator
     {
       public:
-        /** \brief Throws std::invalid_argument for a robot kind without a displacement bound. */
+        /** \brief Throws std::invalid_argument for a robot kind without a displacement bound and for options
+            that are not finite or would switch a guarantee off (a zero slack, a negative tolerance). */
         explicit SolutionValidator(MultiRobotProblem problem, ValidationOptions options = ValidationOptions());
 
         ValidationReport validate(const MultiRobotPlan &plan) const;
