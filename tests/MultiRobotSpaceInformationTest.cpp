@@ -11,6 +11,8 @@
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
 #include <ompl/util/Exception.h>
 
+#include <functional>
+#include <limits>
 #include <random>
 
 using namespace ompl_parc;
@@ -114,6 +116,48 @@ TEST(MultiRobotSpaceInformation, RejectsBadTeams)
     EXPECT_THROW(MultiRobotSpaceInformation({a, a2}), ompl::Exception);
     EXPECT_THROW(MultiRobotSpaceInformation({a, other}), ompl::Exception);
     EXPECT_THROW(MultiRobotSpaceInformation({a}, 0.), ompl::Exception);
+}
+
+TEST(MultiRobotSpaceInformation, ResolutionsAndBoundsNoPlanCouldCrossAreRefusedNamingTheRobot)
+{
+    // Crossing the bounds once must fit in a plan (MultiRobotPlan::MAX_TIMESTEP): beyond it OMPL's own check
+    // used to fail with "The fraction of the extent must be larger than 0 and less than 1", naming nothing.
+    ob::RealVectorBounds bounds(2);
+    bounds.setLow(-1);
+    bounds.setHigh(1);
+    auto env = std::make_shared<Environment>();
+    auto a = std::make_shared<DiscRobot>("a", env, 0.1, bounds);
+    const auto message = [&](const std::function<void()> &call)
+    {
+        try
+        {
+            call();
+        }
+        catch (const ompl::Exception &e)
+        {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    for (double resolution : {1e308, 1e8})
+        EXPECT_NE(message([&] { MultiRobotSpaceInformation({a}, resolution); }).find("robot 'a': resolution"),
+                  std::string::npos)
+            << resolution;
+    for (double resolution : {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()})
+        EXPECT_NE(message([&] { MultiRobotSpaceInformation({a}, resolution); })
+                      .find("resolution must be a positive, finite number"),
+                  std::string::npos);
+    EXPECT_NO_THROW(MultiRobotSpaceInformation({a}, 3e7));  // 2.83 x 3e7 timesteps cross the bounds
+    ob::RealVectorBounds huge(2);
+    huge.setLow(-1e15);
+    huge.setHigh(1e15);
+    EXPECT_EQ(
+        message([&] { DiscRobot("wide", env, 0.1, huge); }),
+        "Robot: robot 'wide': resolution 128 times the diagonal of its bounds (2.82843e+15) is 3.62039e+17 timesteps, "
+        "more than a plan may hold (100000000): lower the resolution or shrink the bounds");
+    huge.setLow(0, -std::numeric_limits<double>::infinity());
+    EXPECT_NE(message([&] { DiscRobot("open", env, 0.1, huge); }).find("are not finite in dimension 0"),
+              std::string::npos);
 }
 
 TEST(MultiRobotSpaceInformation, PlainSpaceInformationIsRejectedWithAClearError)

@@ -477,12 +477,13 @@ TEST(Parc, SixteenWorkersOnPandaCage16StopPromptly)
     }
 }
 
-TEST(Parc, StopsPromptlyAtResolution1e8)
+TEST(Parc, StopsPromptlyAtTheFinestResolution)
 {
-    // At 1e8 timesteps per unit one motion check spans a billion states: motion checks poll the stop too. The two
+    // At 3e6 timesteps per unit (near the finest a team of these bounds accepts, MultiRobotPlan::MAX_TIMESTEP to
+    // cross them) one motion check spans tens of millions of states: motion checks poll the stop too. The two
     // discs can never pass each other (no solution exists), so every run ends by the stop: initial paths, detection
-    // and repairs of ever larger windows, each with motion checks over up to a billion states, until the limit.
-    const auto swap = test::corridorSwap(1e8);
+    // and repairs of ever larger windows, each with motion checks over up to 3e7 states, until the limit.
+    const auto swap = test::corridorSwap(3e6);
     for (unsigned int workers : {1u, 2u})
     {
         PARC parc(swap.getSpaceInformation());

@@ -11,6 +11,7 @@
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <sstream>
 #include <utility>
@@ -42,8 +43,6 @@ namespace
                                                const std::vector<ob::RealVectorBounds> &bounds, std::uint_fast32_t seed)
     {
         checkTeam(robots);
-        if (!(resolution > 0.))
-            throw ompl::Exception("MultiRobotSpaceInformation", "resolution must be positive");
         if (!bounds.empty() && bounds.size() != robots.size())
             throw ompl::Exception("MultiRobotSpaceInformation", "need one bounds entry per robot");
         std::vector<ob::StateSpacePtr> spaces;
@@ -59,6 +58,7 @@ namespace
                     throw ompl::Exception(
                         "MultiRobotSpaceInformation",
                         "bounds of robot '" + robot.getName() + "' are empty in dimension " + std::to_string(d));
+            ompl_parc::Robot::checkTimesteps(robot.getName(), b, resolution);
             auto space = ompl_parc::makeStateSpace<ob::RealVectorStateSpace>(robot.getDimension());
             space->setBounds(b);
             space->setName(robot.getName());

@@ -1,6 +1,7 @@
 #include "ompl_parc/robots/Robot.h"
 
 #include "ompl_parc/collision/CapsuleCollision.h"
+#include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/robots/RakeMotionValidator.h"
 
 #include <ompl/base/ScopedState.h>
@@ -8,6 +9,8 @@
 #include <ompl/util/Exception.h>
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 
 namespace ob = ompl::base;
 
@@ -34,10 +37,32 @@ ompl_parc::Robot::Robot(std::string name, EnvironmentPtr environment, const ob::
     setResolution(128.);
 }
 
+void ompl_parc::Robot::checkTimesteps(const std::string &name, const ob::RealVectorBounds &bounds, double resolution)
+{
+    if (!(resolution > 0.) || !std::isfinite(resolution))
+        throw ompl::Exception("Robot", "resolution must be a positive, finite number");
+    double extent2 = 0.;
+    for (std::size_t d = 0; d < bounds.low.size(); ++d)
+    {
+        if (!std::isfinite(bounds.low[d]) || !std::isfinite(bounds.high[d]))
+            throw ompl::Exception("Robot",
+                                  "bounds of robot '" + name + "' are not finite in dimension " + std::to_string(d));
+        extent2 += (bounds.high[d] - bounds.low[d]) * (bounds.high[d] - bounds.low[d]);
+    }
+    const double crossing = resolution * std::sqrt(extent2);
+    if (!(crossing <= static_cast<double>(MultiRobotPlan::MAX_TIMESTEP)))
+    {
+        std::ostringstream out;
+        out << "robot '" << name << "': resolution " << resolution << " times the diagonal of its bounds ("
+            << std::sqrt(extent2) << ") is " << crossing << " timesteps, more than a plan may hold ("
+            << MultiRobotPlan::MAX_TIMESTEP << "): lower the resolution or shrink the bounds";
+        throw ompl::Exception("Robot", out.str());
+    }
+}
+
 void ompl_parc::Robot::setResolution(double stepsPerUnit)
 {
-    if (!(stepsPerUnit > 0.))
-        throw ompl::Exception("Robot", "resolution must be positive");
+    checkTimesteps(name_, bounds_, stepsPerUnit);
     const double fraction = std::min(0.5, 1. / (stepsPerUnit * getStateSpace()->getMaximumExtent()));
     si_->setStateValidityCheckingResolution(fraction);
     si_->setup();

@@ -97,8 +97,16 @@ namespace ompl_parc
         void stateToConfig(const ompl::base::State *state, double *q) const;
         void configToState(const double *q, ompl::base::State *state) const;
 
-        /** \brief Motions are checked every 1/\e stepsPerUnit of distance (the plans' timestep length). */
+        /** \brief Motions are checked every 1/\e stepsPerUnit of distance (the plans' timestep length).
+            Throws like checkTimesteps(). */
         void setResolution(double stepsPerUnit);
+
+        /** \brief Throws ompl::Exception naming robot \e name if \e bounds are not finite or if crossing them
+            once (the diagonal) at \e resolution timesteps per unit takes more timesteps than a plan may hold
+            (MultiRobotPlan::MAX_TIMESTEP): such a team could only get plans nobody can check, and OMPL's motion
+            checks would underflow. */
+        static void checkTimesteps(const std::string &name, const ompl::base::RealVectorBounds &bounds,
+                                   double resolution);
 
         static std::string toString(Validity validity);
 
