@@ -9,7 +9,9 @@
 
 #include <ompl/base/ScopedState.h>
 
+#include <cstdint>
 #include <cstdio>
+#include <fstream>
 
 using namespace ompl_parc;
 using nlohmann::json;
@@ -80,9 +82,8 @@ TEST_F(SolutionFileTest, Version1IsStillRead)
         const auto flat = plan.getRobotPath(i);
         for (std::size_t k = 0; k < flat.size(); k += 2)
             states.push_back({flat[k], flat[k + 1]});
-        robots.push_back({{"name", problem.getSpaceInformation()->getRobot(i)->getName()},
-                          {"kind", "disc"},
-                          {"states", states}});
+        robots.push_back(
+            {{"name", problem.getSpaceInformation()->getRobot(i)->getName()}, {"kind", "disc"}, {"states", states}});
     }
     json doc = {{"format", "ompl_parc.solution"}, {"version", 1}, {"resolution", 128}, {"robots", robots}};
     const auto back = SolutionFile::fromJson(doc.dump(), *problem.getSpaceInformation());
@@ -129,4 +130,28 @@ TEST_F(SolutionFileTest, MalformedFilesNameTheField)
     EXPECT_THROW(SolutionFile::fromJson("{\"format\": ", *problem.getSpaceInformation()), ompl::Exception);
     EXPECT_THROW(SolutionFile::fromJson("[1, 2]", *problem.getSpaceInformation()), ompl::Exception);
     EXPECT_THROW(SolutionFile::read("/nonexistent/solution.json", *problem.getSpaceInformation()), ompl::Exception);
+    // Unknown fields are refused, at the top and in a robot's entry, as in scenario files.
+    EXPECT_TRUE(has(errorFor([](json &d) { d["comment"] = "x"; }), "solution: unknown field 'comment'"));
+    EXPECT_TRUE(
+        has(errorFor([](json &d) { d["robots"][1]["states"] = json::array(); }), "robots[1]: unknown field 'states'"));
+    // Timesteps beyond the largest a plan may have (a 300-byte file used to keep the validator busy for hours).
+    const std::string late = std::to_string(static_cast<std::uint64_t>(1) << 62);
+    EXPECT_TRUE(has(errorFor([&](json &d) { d["robots"][0]["arrival"] = json::parse(late); }),
+                    "robots[0].arrival must be a whole number from 0 to 100000000"));
+    EXPECT_TRUE(
+        has(errorFor([&](json &d) { d["robots"][0]["pieces"][1][2] = json::parse(late); }), "robots[0].pieces[1][2]"));
+}
+
+TEST_F(SolutionFileTest, APlanOfAnotherTeamIsNotWritten)
+{
+    MultiRobotPlan three(std::vector<unsigned int>{2, 2, 2}, 128.);
+    MultiRobotPlan arm(std::vector<unsigned int>{2, 3}, 128.);
+    MultiRobotPlan coarse(std::vector<unsigned int>{2, 2}, 64.);
+    const std::string path = testing::TempDir() + "/not_written.json";
+    for (const MultiRobotPlan *other : {&three, &arm, &coarse})
+    {
+        std::remove(path.c_str());
+        EXPECT_THROW(SolutionFile::write(path, *other, *problem.getSpaceInformation()), ompl::Exception);
+        EXPECT_FALSE(std::ifstream(path).good());
+    }
 }

@@ -1,5 +1,6 @@
 #include "ompl_parc/io/ScenarioFile.h"
 
+#include "ompl_parc/io/JsonFields.h"
 #include "ompl_parc/robots/BuiltinModels.h"
 #include "ompl_parc/robots/DiscRobot.h"
 #include "ompl_parc/robots/PlanarArm.h"
@@ -51,12 +52,9 @@ namespace
             fail(where + " must be an object");
     }
 
-    /** Rejects fields outside \e allowed, so a misspelt optional field is not silently ignored. */
     void allowOnly(const json &object, const std::set<std::string> &allowed, const std::string &where)
     {
-        for (const auto &entry : object.items())
-            if (allowed.count(entry.key()) == 0)
-                fail(where + ": unknown field '" + entry.key() + "'");
+        ompl_parc::allowOnlyFields(object, allowed, where, "ScenarioFile");
     }
 
     double number(const json &value, const std::string &where, bool positive = false)

@@ -1,10 +1,13 @@
 #include "ompl_parc/io/SolutionFile.h"
 
+#include "ompl_parc/io/JsonFields.h"
+
 #include "ompl_parc/util/TextFile.h"
 
 #include <nlohmann/json.hpp>
 #include <ompl/util/Exception.h>
 
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <sstream>
@@ -41,10 +44,12 @@ namespace
         }
     }
 
+    /** A timestep or step count: a whole number up to MultiRobotPlan::MAX_TIMESTEP. */
     std::size_t readCount(const json &value, const std::string &where)
     {
-        if (!value.is_number_unsigned())
-            fail(where + " must be a non-negative integer");
+        if (!value.is_number_unsigned() || value.get<std::uint64_t>() > ompl_parc::MultiRobotPlan::MAX_TIMESTEP)
+            fail(where + " must be a whole number from 0 to " +
+                 std::to_string(ompl_parc::MultiRobotPlan::MAX_TIMESTEP));
         return value.get<std::size_t>();
     }
 
@@ -108,6 +113,21 @@ namespace
 
 std::string ompl_parc::SolutionFile::toJson(const MultiRobotPlan &plan, const MultiRobotSpaceInformation &si)
 {
+    // The file names the team's robots: a plan of another team would be written under wrong names and kinds.
+    if (plan.getRobotCount() != si.getRobotCount())
+        fail("the plan has " + std::to_string(plan.getRobotCount()) + " robots, the problem has " +
+             std::to_string(si.getRobotCount()));
+    if (std::abs(plan.getResolution() - si.getResolution()) > 1e-9)
+        fail("the plan's resolution differs from the problem's");
+    for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
+    {
+        if (plan.getDimension(i) != si.getRobot(i)->getDimension())
+            fail("the plan's robot " + std::to_string(i) + " has " + std::to_string(plan.getDimension(i)) +
+                 " coordinates, robot '" + si.getRobot(i)->getName() + "' has " +
+                 std::to_string(si.getRobot(i)->getDimension()));
+        if (plan.getPath(i).empty())
+            fail("the plan has no path for robot '" + si.getRobot(i)->getName() + "'");
+    }
     // One robot per line: compact, yet a diff or a reader can still find a robot.
     std::string text = json{{"format", FORMAT}, {"version", VERSION}, {"resolution", plan.getResolution()}}.dump();
     text.pop_back();
@@ -135,10 +155,11 @@ std::string ompl_parc::SolutionFile::toJson(const MultiRobotPlan &plan, const Mu
 void ompl_parc::SolutionFile::write(const std::string &path, const MultiRobotPlan &plan,
                                     const MultiRobotSpaceInformation &si)
 {
+    const std::string text = toJson(plan, si);  // before the file is opened: a refused plan leaves no file
     std::ofstream out(path);
     if (!out)
         fail("cannot write '" + path + "'");
-    out << toJson(plan, si) << '\n';
+    out << text << '\n';
     if (!out)
         fail("error writing '" + path + "'");
 }
@@ -161,6 +182,7 @@ ompl_parc::MultiRobotPlan ompl_parc::SolutionFile::fromJson(const std::string &t
         fail(std::string("not valid JSON: ") + e.what());
     }
     const json &format = field(doc, "format", "solution");
+    ompl_parc::allowOnlyFields(doc, {"format", "version", "resolution", "robots"}, "solution", "SolutionFile");
     if (!format.is_string() || format.get<std::string>() != FORMAT)
         fail("'format' must be \"" + std::string(FORMAT) + "\"");
     const json &version = field(doc, "version", "solution");
@@ -184,14 +206,20 @@ ompl_parc::MultiRobotPlan ompl_parc::SolutionFile::fromJson(const std::string &t
     {
         const std::string where = "robots[" + std::to_string(i) + "]";
         const auto &robot = *si.getRobot(i);
+        if (robots[i].is_object())
+            ompl_parc::allowOnlyFields(robots[i],
+                                       version.get<int>() == 1
+                                           ? std::set<std::string>{"name", "kind", "states"}
+                                           : std::set<std::string>{"name", "kind", "arrival", "pieces"},
+                                       where, "SolutionFile");
         const json &name = field(robots[i], "name", where);
         if (!name.is_string() || name.get<std::string>() != robot.getName())
             fail(where + ".name must be \"" + robot.getName() + "\"");
         const json &kind = field(robots[i], "kind", where);
         if (!kind.is_string() || kind.get<std::string>() != robot.getKind())
             fail(where + ".kind must be \"" + robot.getKind() + "\"");
-        plan.setPath(i, version.get<int>() == 1 ? readStates(robots[i], dims[i], where) :
-                                                  readPieces(robots[i], dims[i], where));
+        plan.setPath(
+            i, version.get<int>() == 1 ? readStates(robots[i], dims[i], where) : readPieces(robots[i], dims[i], where));
     }
     return plan;
 }
