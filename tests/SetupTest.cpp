@@ -76,6 +76,59 @@ TEST(PlannerRegistry, FindsPlannersByTheirNamesInAnySpelling)
 
 /* The README's promise: a team, starts and goals by robot name, "parc" with typed parameters, the per-robot plan
    from the requested starts to the requested goals, validated; the progress properties at the end of the solve. */
+TEST(PlannerRegistry, EveryParameterOfEveryPlannerIsReadByItsType)
+{
+    // OMPL's own reading takes any text but "0", "false" and "" as true, wraps "-1" and truncates "2.5":
+    // through the registry (the tools, benchmark configurations, MultiRobotSetup, Python) every value is read
+    // by its parameter's type or refused.
+    const auto si = scenarios::createMobileCross(4).getSpaceInformation();
+    std::size_t bools = 0, wholes = 0, reals = 0;
+    for (const std::string &name : PlannerRegistry::names())
+    {
+        const auto planner = PlannerRegistry::create(name, si);
+        for (const auto &[key, parameter] : planner->params().getParams())
+        {
+            SCOPED_TRACE(name + " " + key);
+            const std::string before = parameter->getValue();
+            if (dynamic_cast<const ompl::base::SpecificParam<bool> *>(parameter.get()) != nullptr)
+            {
+                ++bools;
+                for (const std::string &no : {"0", "false", "off", "no", "No", "FALSE"})
+                {
+                    PlannerRegistry::setParameter(*planner, key, no);
+                    EXPECT_EQ(parameter->getValue(), "0") << no;
+                }
+                for (const std::string &yes : {"1", "true", "on", "yes", "Yes"})
+                {
+                    PlannerRegistry::setParameter(*planner, key, yes);
+                    EXPECT_EQ(parameter->getValue(), "1") << yes;
+                }
+                for (const std::string &bad : {"", "maybe", "2", "-1", "0.5", "n", "offf"})
+                    EXPECT_THROW(PlannerRegistry::setParameter(*planner, key, bad), std::invalid_argument) << bad;
+            }
+            else if (dynamic_cast<const ompl::base::SpecificParam<unsigned int> *>(parameter.get()) != nullptr)
+            {
+                ++wholes;
+                for (const std::string &bad :
+                     {"", "-1", "2.5", "1e3", "+3", " 3", "0x10", "3 ", "abc", "99999999999999999999", "4294967296"})
+                    EXPECT_THROW(PlannerRegistry::setParameter(*planner, key, bad), std::invalid_argument) << bad;
+            }
+            else if (dynamic_cast<const ompl::base::SpecificParam<double> *>(parameter.get()) != nullptr)
+            {
+                ++reals;
+                for (const std::string &bad : {"", "nan", "inf", "-inf", "1e999", "0.5abc", "abc"})
+                    EXPECT_THROW(PlannerRegistry::setParameter(*planner, key, bad), std::invalid_argument) << bad;
+            }
+            // A refused value leaves the parameter as it was.
+            if (dynamic_cast<const ompl::base::SpecificParam<bool> *>(parameter.get()) == nullptr)
+                EXPECT_EQ(parameter->getValue(), before);
+        }
+    }
+    EXPECT_GT(bools, 10u);
+    EXPECT_GT(wholes, 10u);
+    EXPECT_GT(reals, 5u);
+}
+
 TEST(MultiRobotSetup, SolvesByNameWithTypedParameters)
 {
     MultiRobotSetup setup(crossingPairs());
@@ -155,7 +208,7 @@ TEST(MultiRobotSetup, RefusesBadInputWithAReason)
     expectThrow<std::invalid_argument>([&] { setup.setPlannerParameter("workers", 2); },
                                        "planner 'ARC' has no parameter 'workers'");
     expectThrow<std::invalid_argument>([&] { setup.setPlannerParameter("window", -1); },
-                                       "parameter 'window' must be a number from 1 to 2000 (got '-1')");
+                                       "parameter 'window' must be a whole number from 1 to 2000 (got '-1')");
     expectThrow<std::invalid_argument>([&] { setup.setPlannerParameter("growth", "quadratic"); }, "bad value");
     setup.setStart("west_low", {-8., -1.});
     expectThrow<std::invalid_argument>([&] { setup.solve(1.); }, "robot 'west_low' has no goal");

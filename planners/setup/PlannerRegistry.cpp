@@ -15,7 +15,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -38,6 +41,73 @@ namespace
         if (end == range.c_str() + last + 1 || *end != '\0')
             return std::nullopt;
         return std::make_pair(lo, hi);
+    }
+
+    /** \e text in lower case. */
+    std::string lowered(const std::string &text)
+    {
+        std::string out;
+        for (char c : text)
+            out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        return out;
+    }
+
+    /** \e value checked against \e parameter's type and declared range, in the form OMPL's own parser reads
+        unambiguously. OMPL's parser takes any text but "0", "false" and "" as true, wraps "-1" into 4294967295
+        and truncates "2.5" to 2; here a truth value is one of 1/0, true/false, on/off, yes/no (any case), a whole
+        number's text is digits only within its type and range, a real number's finite and within its range. */
+    std::string checkedValue(const ob::GenericParam &parameter, const std::string &key, const std::string &value)
+    {
+        const std::string what = "parameter '" + key + "'";
+        const auto range = numericRange(parameter.getRangeSuggestion());
+        if (dynamic_cast<const ob::SpecificParam<bool> *>(&parameter) != nullptr)
+        {
+            const std::string v = lowered(value);
+            if (v == "1" || v == "true" || v == "on" || v == "yes")
+                return "1";
+            if (v == "0" || v == "false" || v == "off" || v == "no")
+                return "0";
+            throw std::invalid_argument(what + " must be 1/0, true/false, on/off or yes/no (got '" + value + "')");
+        }
+        const auto whole = [&](std::uint64_t hi)
+        {
+            std::uint64_t lo = 0;
+            if (range)
+            {
+                lo = static_cast<std::uint64_t>(std::max(0., std::ceil(range->first)));
+                hi = std::min<std::uint64_t>(hi, static_cast<std::uint64_t>(std::max(0., std::floor(range->second))));
+            }
+            return std::to_string(ompl_parc::parseInteger(value, what, lo, hi));
+        };
+        if (dynamic_cast<const ob::SpecificParam<unsigned int> *>(&parameter) != nullptr)
+            return whole(std::numeric_limits<unsigned int>::max());
+        if (dynamic_cast<const ob::SpecificParam<unsigned long> *>(&parameter) != nullptr)
+            return whole(std::numeric_limits<unsigned long>::max());
+        if (dynamic_cast<const ob::SpecificParam<double> *>(&parameter) != nullptr ||
+            dynamic_cast<const ob::SpecificParam<float> *>(&parameter) != nullptr)
+        {
+            const double lo = range ? range->first : -std::numeric_limits<double>::max();
+            const double hi = range ? range->second : std::numeric_limits<double>::max();
+            ompl_parc::parseReal(value, what, lo, hi);
+            return value;
+        }
+        if (dynamic_cast<const ob::SpecificParam<int> *>(&parameter) != nullptr)
+        {
+            // A signed parameter: the sign apart, the same digits-only reading.
+            const bool negative = !value.empty() && value[0] == '-';
+            const std::string digits = negative ? value.substr(1) : value;
+            const double lo = range ? range->first : std::numeric_limits<int>::min();
+            const double hi = range ? range->second : std::numeric_limits<int>::max();
+            const auto magnitude = ompl_parc::parseInteger(digits, what, 0, static_cast<std::uint64_t>(1) << 31);
+            const double number = negative ? -static_cast<double>(magnitude) : static_cast<double>(magnitude);
+            if (number < lo || number > hi)
+                throw std::invalid_argument(what + " must be a whole number from " + std::to_string(lo) + " to " +
+                                            std::to_string(hi) + " (got '" + value + "')");
+            return value;
+        }
+        if (range)  // another type with a numeric range
+            ompl_parc::parseReal(value, what, range->first, range->second);
+        return value;
     }
 
     template <typename P>
@@ -76,8 +146,8 @@ namespace
         std::string out;
         for (char c : name)
             if (c != '-' && c != '_')
-                out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        return out;
+                out += c;
+        return lowered(out);
     }
 
 }  // namespace
@@ -125,12 +195,11 @@ void ompl_parc::PlannerRegistry::setParameter(ob::Planner &planner, const std::s
         throw std::invalid_argument("planner '" + planner.getName() + "' has no parameter '" + key +
                                     "' (valid: " + listNames(valid) + ")");
     }
-    if (const auto range = numericRange(planner.params().getParams().at(key)->getRangeSuggestion()))
-        parseReal(value, "parameter '" + key + "'", range->first, range->second);
+    const std::string checked = checkedValue(*planner.params().getParams().at(key), key, value);
     bool set = false;
     try
     {
-        set = planner.params().setParam(key, value);
+        set = planner.params().setParam(key, checked);
     }
     catch (const std::exception &e)  // a setter's own check (ompl::Exception)
     {

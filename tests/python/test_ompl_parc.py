@@ -112,6 +112,28 @@ def test_scenario_and_solution_files_round_trip(tmp_path):
     assert (tmp_path / "team.svg").read_text().startswith("<?xml")
 
 
+def test_a_plan_of_another_team_is_not_written(tmp_path):
+    eight = ompl_parc.scenario("mobile_cross", 8)
+    plan = ompl_parc.solve(eight, "arc", seed=1).plan
+    arms = ompl_parc.scenario("planar_cross", 8)
+    for problem, reason in ((ompl_parc.scenario("mobile_cross", 4), "the plan has 8 robots, the problem has 4"),
+                            (ompl_parc.scenario("mobile_cross", 16), "the plan has 8 robots, the problem has 16"),
+                            (arms, "coordinates")):
+        path = tmp_path / "solution.json"
+        with pytest.raises(ValueError, match=reason):
+            ompl_parc.write_solution(str(path), problem, plan)
+        assert not path.exists()
+
+
+def test_truth_values_are_read_strictly():
+    problem = ompl_parc.scenario("mobile_cross", 4)
+    assert ompl_parc.solve(problem, "parc", workers=2, optimistic=False, seed=1).solved
+    with pytest.raises(ValueError, match="parameter 'optimistic' must be 1/0, true/false"):
+        ompl_parc.solve(problem, "parc", optimistic="maybe")
+    with pytest.raises(ValueError, match="parameter 'window' must be a whole number"):
+        ompl_parc.solve(problem, "arc", window=100.7)
+
+
 def test_planner_parameters_are_listed_with_their_ranges():
     parameters = ompl_parc.planner_parameters("P-ARC")
     assert parameters["workers"] == "1:1:64" and "seed" in parameters and "smooth" in parameters
