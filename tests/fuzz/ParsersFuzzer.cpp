@@ -1,5 +1,6 @@
-/* libFuzzer target for the three parsers of user files: scenario files (ScenarioFile::fromJson), solution files
-   (SolutionFile::fromJson, against a fixed team of two discs) and benchmark configs (BenchmarkConfig::parse).
+/* libFuzzer target for the four parsers of user files: scenario files (ScenarioFile::fromJson), solution files
+   (SolutionFile::fromJson, against a fixed team of two discs), benchmark configs (BenchmarkConfig::parse) and URDF
+   arms (UrdfArm: urdfdom and the chain built from it; the file's first line names the base and the tip link).
    The first byte picks the parser, the rest is the file. A clean refusal is any exception derived from
    std::exception (ompl::Exception, std::invalid_argument, ...); what the fuzzer reports is anything else: a crash, a
    sanitizer error (the target is built with AddressSanitizer and UndefinedBehaviorSanitizer), a hang or unbounded
@@ -9,6 +10,7 @@
 #include "ompl_parc/io/ScenarioFile.h"
 #include "ompl_parc/io/SolutionFile.h"
 #include "ompl_parc/robots/DiscRobot.h"
+#include "ompl_parc/robots/UrdfArm.h"
 
 #include <ompl/util/Console.h>
 
@@ -44,7 +46,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     const std::string text(reinterpret_cast<const char *>(data) + 1, size - 1);
     try
     {
-        switch (data[0] % 3)
+        switch (data[0] % 4)
         {
             case 0:
                 ompl_parc::ScenarioFile::fromJson(text, "");
@@ -52,10 +54,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
             case 1:
                 ompl_parc::SolutionFile::fromJson(text, twoDiscs());
                 break;
-            default:
+            case 2:
             {
                 std::istringstream in(text);
                 ompl_parc::BenchmarkConfig::parse(in, ".");
+                break;
+            }
+            default:
+            {
+                const std::size_t line = text.find('\n');
+                std::istringstream links(text.substr(0, line));
+                std::string base, tip;
+                links >> base >> tip;
+                ompl_parc::UrdfArm("arm", nullptr, line == std::string::npos ? "" : text.substr(line + 1), base, tip,
+                                   Eigen::Isometry3d::Identity());
             }
         }
     }
