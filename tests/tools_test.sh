@@ -56,10 +56,12 @@ expect 2 "robots" "$bin/ompl_parc_demo" --robots many
 expect 0 "Usage: ompl_parc_demo" "$bin/ompl_parc_demo" --help
 # Numbers are read whole and range-checked: no wrapping of negatives, no unbounded limits (issue 15's reproducers).
 expect 2 "robots must be a whole number from 1 to 10000 (got '-2')" "$bin/ompl_parc_demo" --robots -2
-expect 2 "parameter 'workers' must be a number from 1 to 64 (got '-1')" "$bin/ompl_parc_demo" --planner parc --workers -1
-expect 2 "parameter 'workers' must be a number from 1 to 64 (got '1000')" \
+expect 2 "parameter 'workers' must be a whole number from 1 to 64 (got '-1')" "$bin/ompl_parc_demo" --planner parc --workers -1
+expect 2 "parameter 'workers' must be a whole number from 1 to 64 (got '1000')" \
     "$bin/ompl_parc_demo" --planner parc --param workers=1000
-expect 2 "parameter 'window' must be a number from 1 to 2000 (got '-1')" "$bin/ompl_parc_demo" --param window=-1
+expect 2 "parameter 'window' must be a whole number from 1 to 2000 (got '-1')" "$bin/ompl_parc_demo" --param window=-1
+expect 2 "parameter 'optimistic' must be 1/0, true/false, on/off or yes/no (got 'maybe')" "$bin/ompl_parc_demo" --planner parc --param optimistic=maybe
+expect 2 "parameter 'seed' must be a whole number from 0 to 4294967295 (got '-1')" "$bin/ompl_parc_demo" --param seed=-1
 expect 2 "time-limit must be a number from 0 to 1e+07 (got 'inf')" "$bin/ompl_parc_demo" --time-limit inf
 expect 2 "time-limit must be a number from 0 to 1e+07 (got '1e10')" "$bin/ompl_parc_demo" --time-limit 1e10
 # Smoothing (issue 16): on by default, the plan it returns validated; off leaves the planner's plan; a bad budget
@@ -140,6 +142,13 @@ r['urdf'] = re.sub(r'<limit[^>]*/>', '', open('$scenarios/../../ompl_parc/robots
 expect 2 "malformed URDF: Joint \[panda_joint1\] is of type REVOLUTE but it does not specify limits" \
     "$bin/ompl_parc_demo" --scenario-file "$tmp/no_limit.json"
 expect 0 "^1$" bash -c "'$bin/ompl_parc_demo' --scenario-file '$tmp/no_limit.json' 2>&1 | wc -l"
+# A collision element urdfdom cannot read (a radius of nan) refuses the URDF instead of leaving its link bodiless.
+panda_edit "$tmp/nan_radius.json" "import re; r = doc['robots'][1]; r.pop('builtin_urdf'); \
+r['urdf'] = re.sub(r'radius=\"[^\"]*\"', 'radius=\"nan\"', open('$scenarios/../../ompl_parc/robots/models/panda.urdf').read(), count=1)"
+expect 2 "malformed URDF: radius \[nan\] is not a valid float" "$bin/ompl_parc_demo" --scenario-file "$tmp/nan_radius.json"
+# The validator checks between timesteps whatever --substeps says.
+expect 0 "^valid: 2 robots" "$bin/ompl_parc_validate" --substeps 1 --scenario-file "$scenarios/panda_cage/panda_cage_2_1.json" \
+    "$tmp/panda.json"
 
 # Generated problem families as scenario files; each reads back and plans.
 expect 0 "rooms_6_2.json" "$bin/ompl_parc_generate" --scenario rooms --robots 6 --task 1 --count 2 --out-dir "$tmp/rooms"
