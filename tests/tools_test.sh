@@ -114,6 +114,9 @@ expect 2 "resolution 1e-09 is too coarse to plan robot 'west_a'.*at least 2$" \
     "$bin/ompl_parc_demo" --scenario-file "$tmp/coarse.json"
 head -c 200 "$scenarios/doorway_swap.json" >"$tmp/cut.json"
 expect 2 "not valid JSON at line" "$bin/ompl_parc_demo" --scenario-file "$tmp/cut.json"
+edit "$tmp/escape.json" 'doc["robots"][1]["name"] = "west\x1b[2J"'
+expect 2 "robots\[1\].name must be printable: it holds a control character at byte 4$" \
+    "$bin/ompl_parc_demo" --scenario-file "$tmp/escape.json"
 # Bad input is reported on exactly one line.
 expect 0 "^1$" bash -c "'$bin/ompl_parc_demo' --scenario-file '$tmp/dup.json' 2>&1 | wc -l"
 
