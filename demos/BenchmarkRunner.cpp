@@ -334,7 +334,7 @@ namespace
                       const std::vector<std::filesystem::path> &paths)
             : config_(config), instances_(instances), csvFile_(openForWriting(paths.back())), csv_(csvFile_)
         {
-            results_.logs.assign(paths.begin(), paths.end() - 1);
+            logs_.assign(paths.begin(), paths.end() - 1);
             results_.csv = paths.back();
             pending_.resize(instances.size());
         }
@@ -345,6 +345,7 @@ namespace
             const std::size_t index = record.instance;
             const Instance &instance = instances_.at(index);
             writeRow(config_, instance, record, csv_, tally_);
+            ++results_.runs;
             results_.invalid += record.invalid ? 1 : 0;
             auto &runs = pending_[index];
             runs.push_back(std::move(record));
@@ -353,14 +354,20 @@ namespace
             std::sort(runs.begin(), runs.end(),
                       [](const tools::RunRecord &a, const tools::RunRecord &b)
                       { return std::tie(a.planner, a.run) < std::tie(b.planner, b.run); });
-            writeLog(config_, instance, runs, results_.logs.at(index));
+            writeLog(config_, instance, runs, logs_.at(index));
+            results_.logs.push_back(logs_.at(index));
             runs.clear();
         }
 
-        /** \brief The results, with the summary table; a line on \e log. */
+        /** \brief The results, with the summary table; a line on \e log. The logs of problems whose runs did not all
+            end (the runs were stopped) are not written: their empty files, made by checkOutput(), are removed. */
         tools::BenchmarkResults finish(std::ostream &log)
         {
-            log << "ompl_parc_benchmark: wrote " << results_.csv.string() << " and " << instances_.size() << " log(s)"
+            for (const auto &path : logs_)
+                if (std::find(results_.logs.begin(), results_.logs.end(), path) == results_.logs.end())
+                    std::filesystem::remove(path);
+            log << "ompl_parc_benchmark: wrote " << results_.csv.string() << " and " << results_.logs.size()
+                << " log(s)"
                 << (results_.invalid ? ", " + std::to_string(results_.invalid) + " INVALID solutions" : std::string())
                 << std::endl;
             std::ostringstream summary;
@@ -373,6 +380,8 @@ namespace
         const BenchmarkConfig &config_;
         const std::vector<Instance> &instances_;
         tools::BenchmarkResults results_;
+        /** \brief Where each problem's log goes (results_.logs: those written). */
+        std::vector<std::filesystem::path> logs_;
         std::ofstream csvFile_;
         tools::ResultsCsv csv_;
         Tally tally_;
@@ -422,7 +431,8 @@ std::vector<std::filesystem::path> ompl_parc::tools::BenchmarkRunner::checkOutpu
 }
 
 void ompl_parc::tools::BenchmarkRunner::runRuns(std::size_t rank, std::size_t ranks, std::ostream &log,
-                                                const std::function<void(RunRecord)> &take)
+                                                const std::function<void(RunRecord)> &take,
+                                                const std::function<bool()> &stopped)
 {
     if (rank == 0)
         for (const std::string &name : seedless_)
@@ -431,7 +441,7 @@ void ompl_parc::tools::BenchmarkRunner::runRuns(std::size_t rank, std::size_t ra
     const std::size_t planners = config_.getPlanners().size(), runs = config_.getRunCount();
     const std::size_t share = getRunCount() / ranks + (rank < getRunCount() % ranks ? 1 : 0);
     std::size_t done = 0;
-    for (std::size_t k = rank; k < getRunCount(); k += ranks)
+    for (std::size_t k = rank; k < getRunCount() && !(stopped && stopped()); k += ranks)
     {
         const std::size_t instance = k / (planners * runs), planner = k / runs % planners, run = k % runs;
         ++done;
@@ -467,9 +477,11 @@ ompl_parc::tools::BenchmarkResults ompl_parc::tools::BenchmarkRunner::write(std:
     return writer.finish(log);
 }
 
-ompl_parc::tools::BenchmarkResults ompl_parc::tools::BenchmarkRunner::run(std::ostream &log)
+ompl_parc::tools::BenchmarkResults ompl_parc::tools::BenchmarkRunner::run(std::ostream &log,
+                                                                          const std::function<bool()> &stopped)
 {
     ResultsWriter writer(config_, instances_, checkOutput());
-    runRuns(0, 1, log, [&writer](RunRecord record) { writer.add(std::move(record)); });
+    const auto take = [&writer](RunRecord record) { writer.add(std::move(record)); };
+    runRuns(0, 1, log, take, stopped);
     return writer.finish(log);
 }

@@ -21,9 +21,12 @@ namespace ompl_parc::tools
     /** \brief What a benchmark wrote and found. */
     struct BenchmarkResults
     {
-        /** \brief The CSV (one row per run, ResultsCsv) and the OMPL logs (one per task). */
+        /** \brief The CSV (one row per run, ResultsCsv) and the OMPL logs written (one per task whose runs all
+            ended: every task's unless the runs were stopped). */
         std::filesystem::path csv;
         std::vector<std::filesystem::path> logs;
+        /** \brief The runs done (the CSV's rows). */
+        std::size_t runs{0};
         /** \brief Solutions the independent validator refused (each also a failed run). */
         std::size_t invalid{0};
         /** \brief Success rate, median time and median makespan ratio per planner, as a Markdown table. */
@@ -60,8 +63,10 @@ namespace ompl_parc::tools
 
         /** \brief Runs everything, one line per run on \e log, each run's CSV row written as it ends; throws
             std::invalid_argument if the output cannot be written (checked before the first run). Writes what
-            write(runShare(0, 1, log), log) would. */
-        BenchmarkResults run(std::ostream &log);
+            write(runShare(0, 1, log), log) would. Once \e stopped (if given) returns true, no further run starts
+            (the one in progress ends at its time limit: OMPL's Benchmark owns its termination condition) and what
+            the runs done make is written: their CSV rows, the logs of the tasks whose runs all ended. */
+        BenchmarkResults run(std::ostream &log, const std::function<bool()> &stopped = {});
 
         /** \brief The number of runs in all: problems x planners x run_count. */
         std::size_t getRunCount() const;
@@ -78,9 +83,10 @@ namespace ompl_parc::tools
         BenchmarkResults write(std::vector<RunRecord> records, std::ostream &log) const;
 
       private:
-        /** \brief Runs share \e rank of \e ranks (see runShare()), handing each run's record to \e take as it ends. */
-        void runRuns(std::size_t rank, std::size_t ranks, std::ostream &log,
-                     const std::function<void(RunRecord)> &take);
+        /** \brief Runs share \e rank of \e ranks (see runShare()), handing each run's record to \e take as it ends;
+            none starts once \e stopped (if given) returns true. */
+        void runRuns(std::size_t rank, std::size_t ranks, std::ostream &log, const std::function<void(RunRecord)> &take,
+                     const std::function<bool()> &stopped = {});
 
         BenchmarkConfig config_;
         std::vector<Instance> instances_;

@@ -15,7 +15,9 @@ namespace ompl_parc::tools
     {
         EXIT_SOLVED = 0,
         EXIT_FAILED = 1,
-        EXIT_BAD_INPUT = 2
+        EXIT_BAD_INPUT = 2,
+        /** \brief Ended by Ctrl-C (SIGINT): 128 + 2, what a shell reports for a process a SIGINT ended. */
+        EXIT_INTERRUPTED = 130
     };
 
     /** \brief Adds --scenario, --robots, --task and --scenario-file to \e options. */

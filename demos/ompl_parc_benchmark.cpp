@@ -3,8 +3,12 @@
    ompl_benchmark_statistics; one per task with [problem] instances = N) and <output>/<name>.csv (one row per run,
    for scripts/plot_benchmarks.py), a line per run on stderr and a table of success rate and median time per planner
    on stdout.
-   Exit 0: all runs done and every solution valid; 1: some solution failed validation; 2: bad input. */
+   Ctrl-C: no further run starts; the one in progress ends at its time limit (a second Ctrl-C quits at once), then the
+   CSV holds the rows of the runs done and each task whose runs all ended has its log.
+   Exit 0: all runs done and every solution valid; 1: some solution failed validation; 2: bad input; 130:
+   interrupted. */
 #include "BenchmarkRunner.h"
+#include "Interruption.h"
 #include "ToolSupport.h"
 
 #include <iostream>
@@ -34,8 +38,16 @@ int main(int argc, char **argv)
                 std::cout << runner.describe() << std::endl;
                 return static_cast<int>(tools::EXIT_SOLVED);
             }
-            const tools::BenchmarkResults results = runner.run(std::cerr);
+            const tools::Interruption interruption("ompl_parc_benchmark", tools::Interruption::FirstSignal::STOP,
+                                                   "no further run starts (this one ends by its time limit)");
+            const tools::BenchmarkResults results = runner.run(std::cerr, tools::Interruption::raised);
             std::cout << results.summary;
+            if (tools::Interruption::raised())
+            {
+                tools::printError("ompl_parc_benchmark", "interrupted after " + std::to_string(results.runs) + " of " +
+                                                             std::to_string(runner.getRunCount()) + " runs");
+                return static_cast<int>(tools::EXIT_INTERRUPTED);
+            }
             return static_cast<int>(results.invalid ? tools::EXIT_FAILED : tools::EXIT_SOLVED);
         });
 }

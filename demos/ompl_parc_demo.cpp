@@ -1,7 +1,10 @@
 /* ompl_parc_demo: solve a built-in multi-robot scenario or a scenario file with one of our planners (or OMPL's
    RRTConnect over the composite space), re-check the result with the independent validator and optionally
    draw it (SVG for 2D problems; for 3D ones --geometry writes the shapes scripts/draw_panda_cage.py draws).
-   Exit 0: solved and validated (or --no-validate); 1: not solved in time (or invalid); 2: bad input. */
+   Ctrl-C stops the planner through its termination condition: the summary says "Interrupted", --out is written only
+   if the plan is complete and validated. Exit 0: solved and validated (or --no-validate); 1: not solved in time (or
+   invalid); 2: bad input; 130: interrupted. */
+#include "Interruption.h"
 #include "ProgressLine.h"
 #include "ToolSupport.h"
 
@@ -185,6 +188,8 @@ int main(int argc, char **argv)
             const auto seed =
                 static_cast<std::uint32_t>(parseInteger(vm["seed"].as<std::string>(), "--seed", 0, UINT32_MAX));
             ompl::RNG::setSeed(seed);
+            // From here on a Ctrl-C stops the work and the summary says so (building a large problem takes a while).
+            const tools::Interruption interruption("ompl_parc_demo");
 
             const MultiRobotProblem problem = tools::problemFromOptions(vm);
             if (const std::string coarse = problem.getSpaceInformation()->checkPlanningResolution(); !coarse.empty())
@@ -215,14 +220,19 @@ int main(int argc, char **argv)
             if (vm.count("quiet") == 0)
                 progress.emplace("planning...", PlannerRegistry::progressOf(*planner), si->getRobotCount());
             const ompl::time::point start = ompl::time::now();
-            // The scope lets OMPL's own planners (rrtconnect) stop inside a long motion check too.
-            const auto ptc = ompl::base::timedPlannerTerminationCondition(timeLimit);
+            // The scope lets OMPL's own planners (rrtconnect) stop inside a long motion check too, on Ctrl-C as well.
+            const auto ptc = ompl::base::plannerOrTerminationCondition(
+                ompl::base::timedPlannerTerminationCondition(timeLimit), tools::Interruption::condition());
             const StopSignal::Scope scope(ptc);
             const auto status = planner->solve(ptc);
             const double planTime = ompl::time::seconds(ompl::time::now() - start);
             progress.reset();
-            std::cout << "status     " << status.asString() << " after " << std::fixed << std::setprecision(3)
-                      << planTime << " s\n";
+            if (tools::Interruption::raised())
+                std::cout << "status     Interrupted after " << std::fixed << std::setprecision(3) << planTime
+                          << " s (the planner returned: " << status.asString() << ")\n";
+            else
+                std::cout << "status     " << status.asString() << " after " << std::fixed << std::setprecision(3)
+                          << planTime << " s\n";
             // Smoothing is part of solve(); the stage line shows the planning before it.
             printStatistics(*planner, planTime - std::stod("0" + propertyOf(*planner, "smoothing_time REAL")));
             // The pictures of the solution, or of the problem alone if there is none.
@@ -244,10 +254,13 @@ int main(int argc, char **argv)
                     std::cout << "geometry   " << vm["geometry"].as<std::string>() << only << std::endl;
                 }
             };
+            // An interrupted run ends as any other and exits 130 (a Ctrl-C during the checks below counts too).
+            const auto exitCode = [](tools::ExitCode code)
+            { return static_cast<int>(tools::Interruption::raised() ? tools::EXIT_INTERRUPTED : code); };
             if (status != ompl::base::PlannerStatus::EXACT_SOLUTION)
             {
                 writePictures(nullptr);
-                return static_cast<int>(tools::EXIT_FAILED);
+                return exitCode(tools::EXIT_FAILED);
             }
 
             MultiRobotPlan plan = PlannerRegistry::planOf(*planner, si, true);
@@ -269,12 +282,15 @@ int main(int argc, char **argv)
                           : report.valid ? "yes (" + std::to_string(checkTime) + " s)"
                                          : "NO: " + report.message)
                       << std::endl;
-            if (vm.count("out"))
+            // After a Ctrl-C the plan is written only as one the validator accepted: nothing half-done lands in a file.
+            if (vm.count("out") && tools::Interruption::raised() && !(validate && report.valid))
+                std::cout << "solution   not written (interrupted: --out takes a validated plan only)" << std::endl;
+            else if (vm.count("out"))
             {
                 SolutionFile::write(vm["out"].as<std::string>(), plan, *si);
                 std::cout << "solution   " << vm["out"].as<std::string>() << std::endl;
             }
             writePictures(&plan);
-            return static_cast<int>(report.valid || !validate ? tools::EXIT_SOLVED : tools::EXIT_FAILED);
+            return exitCode(report.valid || !validate ? tools::EXIT_SOLVED : tools::EXIT_FAILED);
         });
 }

@@ -1,5 +1,8 @@
 /* ompl_parc_validate: re-check a solution file against a problem with the independent validator.
-   Exit 0: valid; 1: invalid (the first violation is printed); 2: bad input (one-line reason). */
+   Exit 0: valid; 1: invalid (the first violation is printed); 2: bad input (one-line reason); 130: interrupted
+   (Ctrl-C ends the check at once with the line "ompl_parc_validate: interrupted": it has nothing to report half-way).
+*/
+#include "Interruption.h"
 #include "ToolSupport.h"
 
 #include "ompl_parc/io/SolutionFile.h"
@@ -29,6 +32,7 @@ int main(int argc, char **argv)
             po::positional_options_description positional;
             positional.add("solution", 1);
             const auto vm = tools::parse(argc, argv, options, positional);
+            const tools::Interruption interruption("ompl_parc_validate", tools::Interruption::FirstSignal::EXIT);
             if (!vm.count("solution"))
                 throw std::invalid_argument("no solution file given (see --help)");
             const MultiRobotProblem problem = tools::problemFromOptions(vm);

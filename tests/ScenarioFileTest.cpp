@@ -162,6 +162,16 @@ TEST(ScenarioFile, ErrorsNameTheField)
     EXPECT_TRUE(has(errorFor([](json &d) { d["robots"][0]["bounds"]["low"][1] = 9; }),
                     "robots[0].bounds.low[1] must be below robots[0].bounds.high[1]"));
     EXPECT_TRUE(has(errorFor([](json &d) { d["robots"][0]["raduis"] = 1; }), "robots[0]: unknown field 'raduis'"));
+    // Names are printed by the tools: a control character (an escape sequence, a line break, DEL, a C1 control in
+    // UTF-8) is refused with the place it is at, without echoing it; other UTF-8 text loads.
+    EXPECT_EQ(errorFor([](json &d) { d["robots"][2]["name"] = "east\x1b[2J"; }),
+              "ScenarioFile: robots[2].name must be printable: it holds a control character at byte 4");
+    EXPECT_TRUE(
+        has(errorFor([](json &d) { d["robots"][0]["name"] = "csi\xc2\x9b"; }), "robots[0].name must be printable"));
+    EXPECT_TRUE(has(errorFor([](json &d) { d["name"] = "two\nlines"; }), "name must be printable"));
+    EXPECT_TRUE(
+        has(errorFor([](json &d) { d["obstacles"][0]["name"] = "wall\x7f"; }), "obstacles[0].name must be printable"));
+    EXPECT_EQ(errorFor([](json &d) { d["robots"][1]["name"] = "röbot → east"; }), "no error");
     EXPECT_TRUE(has(errorFor([](json &d) { d["robots"][1]["kind"] = "urdf_arm"; }), "robots[1]: unknown field"));
     EXPECT_TRUE(has(errorFor([](json &d) { d["robots"][1]["kind"] = "tank"; }),
                     "robots[1].kind must be one of disc, planar_arm"));

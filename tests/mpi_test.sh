@@ -2,8 +2,9 @@
 # ompl_parc_mpi under mpirun with 2 ranks (oversubscribed; --allow-run-as-root where the tests run as root): OR-P-ARC
 # over the ranks solves Mobile Cross 16 and Panda Cage 4 task 0 (validated by rank 0, and the written plan again by
 # ompl_parc_validate); a 0.5 s limit stops every rank within 200 ms of it; a rank that throws ends the run with exit 1
-# and its message, no hang; bad input exits 2 with one line; a benchmark sweep over 2 ranks writes the same CSV rows
-# and OMPL log as ompl_parc_benchmark in one process. Every mpirun has a timeout: a hang fails the test.
+# and its message, no hang; a SIGINT to mpirun ends every rank; bad input exits 2 with one line; a benchmark sweep
+# over 2 ranks writes the same CSV rows and OMPL log as ompl_parc_benchmark in one process, and refuses the race's
+# options beside it. Every mpirun has a timeout: a hang fails the test.
 # With --sanitized (a ThreadSanitizer build): the races only, with the stop bound at 1.5 s for the slower build, over
 # shared memory (Open MPI's TCP transport has a lock-order report of its own), TSAN_OPTIONS passed to the ranks.
 # Usage: mpi_test.sh BIN_DIR MPIEXEC [--sanitized]
@@ -78,6 +79,41 @@ if [ "$sanitized" = --sanitized ]; then
     exit
 fi
 
+# Ctrl-C on mpirun: ompl_parc_mpi installs no SIGINT handler (its ranks are mpirun's to end), and mpirun ends every
+# rank (Open MPI 4.1: exit 1 about 1 s after the SIGINT, no summary). Checked: it ends within 30 s, not with success,
+# and no rank runs on. python3 gives mpirun a default SIGINT (a background job of this shell starts with it ignored).
+python3 -c 'import os, signal, sys
+signal.signal(signal.SIGINT, signal.SIG_DFL)
+os.execv(sys.argv[1], sys.argv[1:])' "$mpiexec" "${flags[@]}" "$bin/ompl_parc_mpi" --scenario panda_cage --robots 16 \
+    --task 3 --time-limit 60 >"$tmp/sigint.out" 2>&1 &
+pid=$!
+sleep 3
+ranks=$(pgrep -P "$pid" | tr '\n' ' ')
+kill -INT "$pid"
+sent=$EPOCHREALTIME
+elapsed() { awk -v s="$sent" -v n="$EPOCHREALTIME" 'BEGIN { printf "%.1f", n - s }'; }
+while kill -0 "$pid" 2>/dev/null && awk -v t="$(elapsed)" 'BEGIN { exit !(t < 30) }'; do
+    sleep 0.1
+done
+took=$(elapsed)
+if kill -0 "$pid" 2>/dev/null; then
+    kill -KILL "$pid"
+    rc=124
+else
+    wait "$pid"
+    rc=$?
+fi
+running=""
+for rank in $ranks; do  # a rank ended but not yet reaped (state Z) has stopped
+    [ -e "/proc/$rank/stat" ] && [ "$(awk '{ print $3 }' "/proc/$rank/stat" 2>/dev/null)" != Z ] && running+="$rank "
+done
+if [ $rc -eq 0 ] || [ $rc -eq 124 ] || [ -z "$ranks" ] || [ -n "$running" ]; then
+    fail "SIGINT to mpirun: exit $rc $took s after it, ranks '$ranks', still running '$running'"
+    cat "$tmp/sigint.out"
+else
+    echo "ok:   SIGINT to mpirun: exit $rc $took s after it, ranks ${ranks}ended"
+fi
+
 # Bad input: exit 2 on every rank, one line from rank 0.
 for bad in "--robots -3" "--scenario-file $tmp/missing.json" "--param instances=3" "--param objective=makespan" \
     "--fail-rank 2" "--time-limit 0" "--out $tmp/no/such/folder/plan.json" "--robots 4 --scenario-file $tmp/x.json"; do
@@ -140,6 +176,22 @@ for log in sweep_0 sweep_1; do
     shape() { grep -E '^(geometric_.*|[0-9]+ runs)$' "$1"; }
     if [ -z "$(shape "$tmp/single/$log.log")" ] || [ "$(shape "$tmp/single/$log.log")" != "$(shape "$tmp/ranks/$log.log")" ]; then
         fail "$log.log: planners and run counts differ between 2 ranks and one process"
+    fi
+done
+# The race's options beside --benchmark would be ignored (the configuration names the problem, planners, seed and
+# limits): refused, exit 2, one line naming them.
+for extra in "--scenario panda_cage" "--robots 8 --task 1" "--fail-rank 1" "--seed 2 --time-limit 5" \
+    "--scenario-file $tmp/x.json" "--param window=10" "--workers 2" "--smooth 0" "--out $tmp/x.json" "--no-validate"; do
+    # shellcheck disable=SC2086
+    mpi ignored --benchmark "$tmp/ranks.cfg" $extra
+    rc=$?
+    given=$(awk '{ for (i = 1; i <= NF; ++i) if ($i ~ /^--/) printf "%s%s", (n++ ? ", " : ""), $i }' <<<"$extra")
+    if [ $rc -ne 2 ] || [ "$(grep -c '^ompl_parc_mpi: ' "$tmp/ignored.out")" -ne 1 ] ||
+        ! grep -q "^ompl_parc_mpi: with --benchmark the configuration names .*: drop $given$" "$tmp/ignored.out"; then
+        fail "--benchmark with '$extra': exit $rc (want 2 and one line naming $given)"
+        cat "$tmp/ignored.out"
+    else
+        echo "ok:   $(grep '^ompl_parc_mpi: ' "$tmp/ignored.out")"
     fi
 done
 if command -v ompl_benchmark_statistics >/dev/null; then

@@ -116,6 +116,9 @@ expect 2 "resolution 1e-09 is too coarse to plan robot 'west_a'.*at least 2$" \
     "$bin/ompl_parc_demo" --scenario-file "$tmp/coarse.json"
 head -c 200 "$scenarios/doorway_swap.json" >"$tmp/cut.json"
 expect 2 "not valid JSON at line" "$bin/ompl_parc_demo" --scenario-file "$tmp/cut.json"
+edit "$tmp/escape.json" 'doc["robots"][1]["name"] = "west\x1b[2J"'
+expect 2 "robots\[1\].name must be printable: it holds a control character at byte 4$" \
+    "$bin/ompl_parc_demo" --scenario-file "$tmp/escape.json"
 # Bad input is reported on exactly one line.
 expect 0 "^1$" bash -c "'$bin/ompl_parc_demo' --scenario-file '$tmp/dup.json' 2>&1 | wc -l"
 
@@ -157,6 +160,106 @@ expect 2 "unknown scenario 'hall'" "$bin/ompl_parc_generate" --scenario hall --o
 expect 2 "count must be a whole number from 1 to 100000 (got '0')" "$bin/ompl_parc_generate" --scenario ring \
     --count 0 --out-dir "$tmp/rooms"
 expect 2 "no --out-dir" "$bin/ompl_parc_generate" --scenario ring
+
+# Ctrl-C. A background job of a non-interactive shell starts with SIGINT ignored (and the tools leave an ignored
+# SIGINT ignored, as shells expect of their jobs): python3 sets the action each check wants before it runs the tool.
+# interrupt ACTION DELAY PRESSES BOUND OUT COMMAND...: runs COMMAND with SIGINT at ACTION (SIG_DFL or SIG_IGN),
+# output to OUT; after DELAY seconds sends a SIGINT, and with PRESSES 2 another one $DELAY2 seconds later (default
+# 0); waits up to BOUND seconds from the first for it to end (then kills it: rc 124). Sets rc and took (seconds from
+# the first SIGINT to the end).
+interrupt() {
+    local action=$1 delay=$2 presses=$3 bound=$4 out=$5
+    shift 5
+    python3 -c 'import os, signal, sys
+signal.signal(signal.SIGINT, getattr(signal, sys.argv[1]))
+os.execv(sys.argv[2], sys.argv[2:])' "$action" "$@" >"$out" 2>&1 &
+    local pid=$! sent
+    sleep "$delay"
+    sent=$EPOCHREALTIME
+    kill -INT "$pid"
+    if [ "$presses" -gt 1 ]; then
+        sleep "${DELAY2:-0}"
+        kill -INT "$pid" 2>/dev/null
+    fi
+    while kill -0 "$pid" 2>/dev/null &&
+        awk -v s="$sent" -v n="$EPOCHREALTIME" -v b="$bound" 'BEGIN { exit !(n - s < b) }'; do
+        sleep 0.05
+    done
+    took=$(awk -v s="$sent" -v n="$EPOCHREALTIME" 'BEGIN { printf "%.3f", n - s }')
+    if kill -0 "$pid" 2>/dev/null; then
+        kill -KILL "$pid"
+        wait "$pid"
+        rc=124
+    else
+        wait "$pid"
+        rc=$?
+    fi
+}
+# check NAME OUT CONDITION: ok if the shell condition holds (it sees rc, took), else FAIL with OUT's head.
+check() {
+    if eval "$3"; then
+        echo "ok:   $1: exit $rc, $took s after the first SIGINT"
+    else
+        echo "FAIL: $1: exit $rc, $took s after the first SIGINT, output:"
+        head -8 "$2"
+        failures=$((failures + 1))
+    fi
+}
+# Panda Cage 16 task 3 takes ARC and P-ARC several seconds (ARC 15 s on this 2-core machine), so a SIGINT at 2 s
+# lands in the solve: the planner stops through its termination condition (P-ARC's workers joined), the summary
+# says "Interrupted", no --out for an unfinished plan, exit 130; within 20 s (milliseconds here).
+hard=(--scenario panda_cage --robots 16 --task 3 --seed 1)
+for planner in "arc" "parc --workers 2"; do
+    name=${planner%% *}
+    # shellcheck disable=SC2086
+    interrupt SIG_DFL 2 1 20 "$tmp/int_$name.out" "$bin/ompl_parc_demo" "${hard[@]}" --time-limit 60 \
+        --planner $planner --out "$tmp/int_$name.json"
+    check "Ctrl-C stops $planner" "$tmp/int_$name.out" '[ $rc -eq 130 ] && ! [ -e "$tmp/int_$name.json" ] &&
+        grep -q "^status     Interrupted after" "$tmp/int_$name.out"'
+done
+# Two at once: exit 130 at once either way (the first may have stopped it before the second arrives).
+interrupt SIG_DFL 2 2 10 "$tmp/int_twice.out" "$bin/ompl_parc_demo" "${hard[@]}" --time-limit 60
+check "Ctrl-C twice" "$tmp/int_twice.out" '[ $rc -eq 130 ]'
+# SIGINT ignored at the start stays ignored: the run goes on to its 4 s limit (exit 1, or 0 if it solved in it).
+interrupt SIG_IGN 1 1 30 "$tmp/int_ignored.out" "$bin/ompl_parc_demo" "${hard[@]}" --time-limit 4
+check "an ignored SIGINT stays ignored" "$tmp/int_ignored.out" \
+    '[ $rc -le 1 ] && ! grep -qi "interrupted" "$tmp/int_ignored.out"'
+# The validator has nothing to report half-way: one line and exit 130 at the first SIGINT (the whole check of this
+# plan at 1024 substeps takes 40 s here).
+"$bin/ompl_parc_demo" --scenario panda_cage --robots 4 --seed 1 --quiet --out "$tmp/panda4.json" >/dev/null
+interrupt SIG_DFL 1.5 1 5 "$tmp/int_validate.out" "$bin/ompl_parc_validate" --scenario panda_cage --robots 4 \
+    --substeps 1024 --threads 1 "$tmp/panda4.json"
+check "Ctrl-C in the validator" "$tmp/int_validate.out" \
+    '[ $rc -eq 130 ] && [ "$(cat "$tmp/int_validate.out")" = "ompl_parc_validate: interrupted" ]'
+# The benchmark: after the first SIGINT no run starts, the one in progress ends at its 4 s limit (OMPL's Benchmark
+# owns its termination condition), its CSV row is written, exit 130. A second SIGINT quits at once: a run with a 60 s
+# limit ends 1 s after the first SIGINT, no row written.
+for limit in 4 60; do
+    cat >"$tmp/int_$limit.cfg" <<CFG
+[problem]
+name = int
+scenario = panda_cage
+robots = 16
+task = 3
+
+[benchmark]
+time_limit = $limit
+mem_limit = 8192
+run_count = 3
+output = $tmp/int_$limit
+seed = 1
+
+[planner]
+arc =
+CFG
+done
+interrupt SIG_DFL 1.5 1 20 "$tmp/int_bench.out" "$bin/ompl_parc_benchmark" "$tmp/int_4.cfg"
+check "Ctrl-C in a benchmark: the run in progress ends" "$tmp/int_bench.out" '[ $rc -eq 130 ] &&
+    grep -q "^ompl_parc_benchmark: interrupted after 1 of 3 runs$" "$tmp/int_bench.out" &&
+    [ "$(wc -l <"$tmp/int_4/int.csv")" -eq 2 ] && ! [ -e "$tmp/int_4/int.log" ]'
+DELAY2=1 interrupt SIG_DFL 1.5 2 5 "$tmp/int_bench2.out" "$bin/ompl_parc_benchmark" "$tmp/int_60.cfg"
+check "Ctrl-C twice in a benchmark: quits at once" "$tmp/int_bench2.out" '[ $rc -eq 130 ] &&
+    awk -v t="$took" "BEGIN { exit !(t >= 1 && t < 5) }" && [ "$(wc -l <"$tmp/int_60/int.csv")" -le 1 ]'
 
 # The Panda Cage picture (if Debian's matplotlib is there): geometry file -> PNG.
 if /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then

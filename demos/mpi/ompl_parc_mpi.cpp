@@ -8,7 +8,8 @@
    per rank, and the plan once.
 
    --benchmark CONFIG.cfg: the runs of a benchmark configuration shared over the ranks (MpiSweep); rank 0 writes the
-   same .log and CSV rows as ompl_parc_benchmark would.
+   same .log and CSV rows as ompl_parc_benchmark would. The configuration says everything: the race's options are
+   refused beside it (exit 2), not ignored.
 
    Only rank 0 writes to stdout. Exit codes as the other tools: 0 solved and valid (benchmark: every solution valid);
    1 not solved in time, invalid, or a rank failed; 2 bad input (rank 0 names it; every rank exits 2). */
@@ -63,6 +64,21 @@ namespace
         if (std::filesystem::is_directory(file) || !std::filesystem::is_directory(folder) ||
             access(folder.c_str(), W_OK) != 0)
             throw std::invalid_argument("cannot write --out '" + path + "' (is its folder there and writable?)");
+    }
+
+    /** \brief Throws if --benchmark comes with options of the race, which the sweep would ignore (its configuration
+        names the problem, the planners, the seed and the limits): a run that looks set up is not quietly another. */
+    void checkSweepOptions(const po::variables_map &vm)
+    {
+        std::string given;
+        for (const char *name : {"scenario", "robots", "task", "scenario-file", "param", "seed", "time-limit",
+                                 "workers", "smooth", "out", "no-validate", "fail-rank"})
+            if (vm.count(name) != 0 && !vm[name].defaulted())
+                given += (given.empty() ? "--" : ", --") + std::string(name);
+        if (!given.empty())
+            throw std::invalid_argument(
+                "with --benchmark the configuration names the problem, the planners, the seed and the limits: drop " +
+                given);
     }
 
     /** \brief The options of the race, read on every rank. */
@@ -381,13 +397,19 @@ int main(int argc, char **argv)
                 "out", po::value<std::string>(), "write the solution to this JSON file (rank 0)")(
                 "no-validate", "skip the independent validation of the solution")(
                 "benchmark", po::value<std::string>(),
-                "run this benchmark configuration's runs spread over the ranks instead (see ompl_parc_benchmark)")(
+                "run this benchmark configuration's runs spread over the ranks instead (see ompl_parc_benchmark; "
+                "the race's options are refused beside it)")(
                 "fail-rank", po::value<std::string>(),
                 "for testing the failure path: this rank's solve throws (the run ends with exit 1 and its message)");
             // Every rank parses the same command line: an error is the same everywhere, and rank 0 alone says it.
             po::variables_map vm;
-            if (const std::string error =
-                    mpi.agree(MpiSession::errorOf([&] { vm = tools::parse(argc, argv, options); }));
+            if (const std::string error = mpi.agree(MpiSession::errorOf(
+                    [&]
+                    {
+                        vm = tools::parse(argc, argv, options);
+                        if (vm.count("benchmark"))
+                            checkSweepOptions(vm);
+                    }));
                 !error.empty())
             {
                 if (mpi.isRoot())

@@ -95,6 +95,23 @@ namespace
         return value.get<std::string>();
     }
 
+    /** A name the tools print (summaries, error messages): a control character in it would reach the terminal as
+        a command (a cursor move, a colour, a cleared screen), so none is taken: no C0 control, no DEL and no C1
+        control (UTF-8 U+0080 to U+009F). Other UTF-8 text is welcome. */
+    std::string printableName(const json &value, const std::string &where)
+    {
+        const std::string name = nonEmptyString(value, where);
+        for (std::size_t i = 0; i < name.size(); ++i)
+        {
+            const auto byte = static_cast<unsigned char>(name[i]);
+            const bool c1 = byte == 0xC2 && i + 1 < name.size() && static_cast<unsigned char>(name[i + 1]) >= 0x80 &&
+                            static_cast<unsigned char>(name[i + 1]) <= 0x9F;
+            if (byte < 0x20 || byte == 0x7F || c1)
+                fail(where + " must be printable: it holds a control character at byte " + std::to_string(i));
+        }
+        return name;
+    }
+
     /** {"low": [...], "high": [...]} with \e count entries each and low < high. */
     ompl::base::RealVectorBounds bounds(const json &value, const std::string &where, std::size_t count)
     {
@@ -190,7 +207,7 @@ namespace
         using Shape = ompl_parc::Obstacle::Shape;
         requireObject(value, where);
         const std::string shape = nonEmptyString(field(value, "shape", where), where + ".shape");
-        const std::string name = value.contains("name") ? nonEmptyString(value.at("name"), where + ".name")
+        const std::string name = value.contains("name") ? printableName(value.at("name"), where + ".name")
                                                         : "obstacle" + std::to_string(index);
         if (shape == "box2d")
         {
@@ -299,7 +316,7 @@ namespace
                                       std::vector<double> &start, std::vector<double> &goal)
     {
         requireObject(value, where);
-        const std::string name = nonEmptyString(field(value, "name", where), where + ".name");
+        const std::string name = printableName(field(value, "name", where), where + ".name");
         const std::string kind = nonEmptyString(field(value, "kind", where), where + ".kind");
         ompl_parc::RobotPtr robot;
         if (kind == "disc")
@@ -447,7 +464,7 @@ ompl_parc::MultiRobotProblem ompl_parc::ScenarioFile::fromJson(const std::string
     const json &version = field(doc, "version", "scenario");
     if (!version.is_number_integer() || version.get<std::int64_t>() != VERSION)
         fail("unsupported 'version' (this build reads version " + std::to_string(VERSION) + ")");
-    const std::string name = nonEmptyString(field(doc, "name", "scenario"), "name");
+    const std::string name = printableName(field(doc, "name", "scenario"), "name");
     const double resolution =
         doc.contains("resolution") ? number(doc.at("resolution"), "resolution", true) : DEFAULT_RESOLUTION;
 

@@ -44,8 +44,9 @@ namespace ompl_parc
         to the scenario file's folder). write() names a built-in model rather than inlining it.
 
         Reading is strict so mistakes surface at load time, not as odd plans: every value is type- and
-        range-checked, unknown fields are rejected (typos), robot names must be unique, and the starts and
-        goals must pass MultiRobotProblem::checkEndpoints(). Errors throw ompl::Exception naming the field
+        range-checked, unknown fields are rejected (typos), robot names must be unique, names (the scenario's, the
+        robots', the obstacles') hold no control characters (the tools print them to terminals), and the starts
+        and goals must pass MultiRobotProblem::checkEndpoints(). Errors throw ompl::Exception naming the field
         ("robots[2].radius must be a positive number") or, for a syntax error, the line and column. */
     class ScenarioFile
     {
