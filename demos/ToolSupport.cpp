@@ -2,6 +2,7 @@
 
 #include "ompl_parc/Version.h"
 #include "ompl_parc/io/ScenarioFile.h"
+#include "ompl_parc/model/TeamLimit.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 #include "ompl_parc/util/NameList.h"
 #include "ompl_parc/util/ParseNumber.h"

@@ -6,6 +6,7 @@
 #include "ToolSupport.h"
 
 #include "ompl_parc/io/ScenarioFile.h"
+#include "ompl_parc/model/TeamLimit.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 #include "ompl_parc/util/ParseNumber.h"
 

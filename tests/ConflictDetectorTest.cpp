@@ -5,6 +5,7 @@
 #include "ompl_parc/robots/DiscRobot.h"
 #include "ompl_parc/robots/PlanarArm.h"
 #include "ompl_parc/scenarios/Scenarios.h"
+#include "ompl_parc/util/StopSignal.h"
 
 #include <gtest/gtest.h>
 
@@ -38,8 +39,10 @@ namespace
         return earliest;
     }
 
-    std::vector<std::size_t> allPairs(const ConflictDetector &detector)
+    /** Every pair \e detector tracks for \e plan (discovered first). */
+    std::vector<std::size_t> allPairs(ConflictDetector &detector, const MultiRobotPlan &plan)
     {
+        EXPECT_TRUE(detector.discoverPairs(plan));
         std::vector<std::size_t> pairs(detector.getPairCount());
         for (std::size_t p = 0; p < pairs.size(); ++p)
             pairs[p] = p;
@@ -52,7 +55,8 @@ namespace
         const auto expected = test::allConflicts(si, plan);
         const std::size_t end = plan.getMakespan() + 1;
         ConflictDetector arcMode(si, h), workerMode(si, h);
-        const auto pairs = allPairs(arcMode);
+        const auto pairs = allPairs(arcMode, plan);
+        ASSERT_EQ(allPairs(workerMode, plan), pairs) << "H = " << h;
         EXPECT_EQ(arcMode.scan(plan, pairs, 0, end, true), expected.empty() ? expected : earliestTimestep(expected))
             << "H = " << h;
         EXPECT_EQ(workerMode.scan(plan, pairs, 0, end, false), firstPerPair(expected)) << "H = " << h;
@@ -74,6 +78,7 @@ namespace
                                               std::size_t h)
     {
         ConflictDetector detector(si, h);
+        ASSERT_TRUE(detector.discoverPairs(plan));
         std::vector<std::size_t> subsets[2];
         for (std::size_t p = 0; p < detector.getPairCount(); ++p)
             subsets[p % 2].push_back(p);
@@ -167,19 +172,18 @@ TEST(ConflictDetector, ResetForgetsFrontiersConflictsAndSweptBounds)
     const auto problem = scenarios::createPlanarCross(8);
     const auto &si = *problem.getSpaceInformation();
     ConflictDetector detector(si, 16);
-    const auto pairs = allPairs(detector);
     int conflicting = 0;
     for (int k = 0; k < 20; ++k)
     {
         const auto plan = armWalkPlan(problem, rng);
         detector.reset();
-        for (std::size_t p = 0; p < detector.getPairCount(); ++p)
-            ASSERT_EQ(detector.getFrontier(detector.getPair(p).first, detector.getPair(p).second), 0u);
+        ASSERT_EQ(detector.getPairCount(), 0u);  // every pair to be discovered again
         ConflictDetector fresh(si, 16);
         const auto expected = fresh.findEarliest(plan);
         EXPECT_EQ(detector.findEarliest(plan), expected);
         conflicting += expected ? 1 : 0;
-        detector.scan(plan, pairs, 0, plan.getMakespan() + 1, false);  // the next plan starts from all of this
+        // The next plan starts from all of this.
+        detector.scan(plan, allPairs(detector, plan), 0, plan.getMakespan() + 1, false);
     }
     EXPECT_GT(conflicting, 5);
 }
@@ -196,7 +200,7 @@ TEST(ConflictDetector, InvalidationDropsStaleSweptBounds)
     {
         auto plan = test::randomWalkPlan(*problem.getSpaceInformation(), rng, 5. / 128.);
         ConflictDetector detector(si, 16);
-        const auto pairs = allPairs(detector);
+        const auto pairs = allPairs(detector, plan);
         detector.scan(plan, pairs, 0, plan.getMakespan() + 1, false);
         const std::size_t a = robot(rng), b = (a + 1 + robot(rng) % (si.getRobotCount() - 1)) % si.getRobotCount();
         const std::size_t t = std::uniform_int_distribution<std::size_t>(0, plan.getArrival(a))(rng);
@@ -263,9 +267,7 @@ TEST(ConflictDetector, ScanOfAPairSubsetReportsAllConflictsAtTheFirstConflicting
     const auto &si = *problem.getSpaceInformation();
     MultiRobotPlan plan = test::straightLinePlan(problem);
     ConflictDetector detector(si);
-    std::vector<std::size_t> all(detector.getPairCount());
-    for (std::size_t p = 0; p < all.size(); ++p)
-        all[p] = p;
+    const auto all = allPairs(detector, plan);
     const auto conflicts = detector.scan(plan, all, 0, plan.getMakespan() + 1, true);
     ASSERT_EQ(conflicts.size(), 2u);
     EXPECT_EQ(conflicts[0].first, 0u);
@@ -275,11 +277,13 @@ TEST(ConflictDetector, ScanOfAPairSubsetReportsAllConflictsAtTheFirstConflicting
     EXPECT_EQ(conflicts[0].timestep, conflicts[1].timestep);
     // Skipping robot 0 leaves only the (2, 3) conflict; a horizon before it finds nothing.
     ConflictDetector fresh(si);
+    ASSERT_EQ(allPairs(fresh, plan), all);
     const auto skipped = fresh.scan(plan, all, 0, plan.getMakespan() + 1, true,
                                     [](std::size_t i, std::size_t j) { return i == 0 || j == 0; });
     ASSERT_EQ(skipped.size(), 1u);
     EXPECT_EQ(skipped[0].first, 2u);
     ConflictDetector early(si);
+    ASSERT_EQ(allPairs(early, plan), all);
     EXPECT_TRUE(early.scan(plan, all, 0, conflicts[0].timestep, true).empty());
     EXPECT_EQ(early.getFrontier(0, 1), conflicts[0].timestep);
 }
@@ -305,7 +309,9 @@ TEST(ConflictDetector, ALaterScanNeverResumesAPairPastItsKnownConflict)
     const auto &si = *problem.getSpaceInformation();
     MultiRobotPlan plan = test::straightLinePlan(problem);
     ConflictDetector detector(si);
-    const std::vector<std::size_t> pair = {detector.pairIndex(0, 1)};
+    ASSERT_TRUE(detector.discoverPairs(plan));
+    ASSERT_TRUE(detector.findPair(0, 1));
+    const std::vector<std::size_t> pair = {*detector.findPair(0, 1)};
     const auto first = detector.scan(plan, pair, 0, 1400, false);
     ASSERT_EQ(first.size(), 1u);
     const std::size_t t = first.front().timestep;
@@ -426,4 +432,107 @@ TEST(ConflictDetector, ConcurrentScansOfAMixedTeam)
         const auto plan = piecewisePlan(*si, rng);
         expectConcurrentScansMatchBruteForce(*si, plan, 16);
     }
+}
+
+namespace
+{
+    /** \brief Every robot of \e problem on one straight piece from its start to its goal (a few bytes per robot
+        whatever the distance, unlike test::straightLinePlan's dense states). */
+    MultiRobotPlan straightPiecePlan(const MultiRobotProblem &problem)
+    {
+        const auto &si = *problem.getSpaceInformation();
+        MultiRobotPlan plan(si);
+        for (std::size_t r = 0; r < si.getRobotCount(); ++r)
+        {
+            const auto &s = problem.getStart(r), &g = problem.getGoal(r);
+            TimedPath path(si.getRobot(r)->getDimension(), s.data());
+            path.appendMotion(s.data(), g.data(),
+                              MultiRobotPlan::stepsFor(si.getRobot(r)->distance(s.data(), g.data()),
+                                                       si.getResolution()));
+            path.trimArrival();
+            plan.setPath(r, path);
+        }
+        return plan;
+    }
+}  // namespace
+
+/* The pairs tracked for a well-separated team grow with the team, not with its square: of Mobile Cross 2000's
+   1 999 000 pairs, those of discs on different lines never meet (the lines are 5 apart), so only the 1000 pairs of
+   a line's two discs are tracked, and the earliest conflict is a line's head-on swap. */
+TEST(ConflictDetector, TracksPairsInProportionToAWellSeparatedTeam)
+{
+    const auto problem = scenarios::createMobileCross(2000);
+    const auto plan = straightPiecePlan(problem);
+    ConflictDetector detector(*problem.getSpaceInformation());
+    ASSERT_TRUE(detector.discoverPairs(plan));
+    EXPECT_EQ(detector.getPairCount(), 1000u);
+    for (std::size_t r = 0; r < 2000; r += 2)
+        ASSERT_TRUE(detector.findPair(r, r + 1)) << "line " << r / 2;
+    const auto earliest = detector.findEarliest(plan);
+    ASSERT_TRUE(earliest);
+    EXPECT_EQ(earliest->second, earliest->first + 1);
+    EXPECT_EQ(earliest->first % 2, 0u);
+}
+
+/* Discovery is sound on a spread team whose plans change: every pair brute force finds in conflict is tracked, and
+   the earliest conflict is brute force's, after a new plan (the sweep over the whole team) and after robot a copies
+   far robot b's path from timestep t on (the changed robot alone tested against the team). */
+TEST(ConflictDetector, TracksEveryConflictingPairAcrossInvalidations)
+{
+    std::mt19937 rng(71);
+    const auto problem = scenarios::createMobileCross(40, 8.);  // 1600 timesteps: brute force stays quick
+    const auto &si = *problem.getSpaceInformation();
+    std::uniform_int_distribution<std::size_t> robot(0, si.getRobotCount() - 1);
+    const auto expectTracked = [&](ConflictDetector &detector, const MultiRobotPlan &plan)
+    {
+        ASSERT_TRUE(detector.discoverPairs(plan));
+        const auto all = test::allConflicts(si, plan);
+        for (const Conflict &c : all)
+            ASSERT_TRUE(detector.findPair(c.first, c.second)) << c.first << ", " << c.second;
+        const auto found = detector.findEarliest(plan);
+        ASSERT_EQ(found.has_value(), !all.empty());
+        if (found)
+            EXPECT_EQ(*found, all.front());
+        EXPECT_LT(detector.getPairCount(), si.getRobotCount() * (si.getRobotCount() - 1) / 2);
+    };
+    for (int k = 0; k < 10; ++k)
+    {
+        auto plan = straightPiecePlan(problem);
+        ConflictDetector detector(si, 16);
+        expectTracked(detector, plan);
+        const std::size_t a = robot(rng), b = (a + 7 + robot(rng) % 20) % si.getRobotCount();
+        const std::size_t t = std::uniform_int_distribution<std::size_t>(0, plan.getArrival(a))(rng);
+        test::followFrom(plan, a, b, t);
+        detector.invalidate(a, t);
+        expectTracked(detector, plan);
+    }
+}
+
+/* A scan over a large team honours the planning's stop: with the thread's termination condition fired, a scan of
+   Mobile Cross 2000's pairs checks at most one poll interval of them and leaves the rest unchecked (frontier 0),
+   and a discovery stops before its sweep; a later scan without the stop finds the earliest conflict as usual. */
+TEST(ConflictDetector, ScansAndDiscoveryOfALargeTeamStopOnceTheTerminationConditionFires)
+{
+    const auto problem = scenarios::createMobileCross(2000);
+    const auto plan = straightPiecePlan(problem);
+    const ompl::base::PlannerTerminationCondition fired([] { return true; });
+    ConflictDetector detector(*problem.getSpaceInformation());
+    {
+        const StopSignal::Scope scope(fired);
+        EXPECT_FALSE(detector.discoverPairs(plan));
+        EXPECT_FALSE(detector.findEarliest(plan));
+    }
+    ASSERT_TRUE(detector.discoverPairs(plan));
+    const auto pairs = allPairs(detector, plan);
+    {
+        const StopSignal::Scope scope(fired);
+        EXPECT_TRUE(detector.scan(plan, pairs, 0, plan.getMakespan() + 1, false).size() < 256u);
+    }
+    std::size_t checked = 0;
+    for (std::size_t p = 0; p < detector.getPairCount(); ++p)
+        checked += detector.getFrontier(detector.getPair(p).first, detector.getPair(p).second) > 0 ? 1 : 0;
+    EXPECT_LT(checked, 256u);
+    const auto earliest = detector.findEarliest(plan);
+    ASSERT_TRUE(earliest);
+    EXPECT_EQ(earliest->second, earliest->first + 1);
 }

@@ -1,3 +1,4 @@
+#include "ompl_parc/model/TeamLimit.h"
 #include "ompl_parc/robots/PlanarArm.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 
@@ -5,6 +6,8 @@
 #include <ompl/util/Exception.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 using namespace ompl_parc;
 
@@ -96,4 +99,26 @@ TEST(Scenarios, BadRobotCountsAndNamesAreRejected)
     {
         EXPECT_NE(std::string(e.what()).find("mobile_cross"), std::string::npos);
     }
+}
+
+/* A team over MAX_ROBOTS is refused before a robot is built, by every scenario alike (the tools and the Python module
+   build their teams through createScenario()): a million discs would take gigabytes and minutes to drop. */
+TEST(Scenarios, TeamsOverTheLimitAreRefusedBeforeTheyAreBuilt)
+{
+    for (const std::string name : {"mobile_cross", "field", "ring"})
+    {
+        try
+        {
+            scenarios::createScenario(name, 1000000);
+            FAIL() << name;
+        }
+        catch (const std::invalid_argument &e)
+        {
+            EXPECT_EQ(std::string(e.what()),
+                      "scenario '" + name + "': a team of 1000000 robots is over the limit of " +
+                          std::to_string(MAX_ROBOTS));
+        }
+    }
+    EXPECT_NO_THROW(checkTeamSize(MAX_ROBOTS, "team"));
+    EXPECT_THROW(checkTeamSize(MAX_ROBOTS + 1, "team"), std::invalid_argument);
 }

@@ -55,7 +55,8 @@ expect 2 "unrecognised option\|unrecognized option" "$bin/ompl_parc_demo" --bogu
 expect 2 "robots" "$bin/ompl_parc_demo" --robots many
 expect 0 "Usage: ompl_parc_demo" "$bin/ompl_parc_demo" --help
 # Numbers are read whole and range-checked: no wrapping of negatives, no unbounded limits (issue 15's reproducers).
-expect 2 "robots must be a whole number from 1 to 10000 (got '-2')" "$bin/ompl_parc_demo" --robots -2
+expect 2 "robots must be a whole number from 1 to 20000 (got '-2')" "$bin/ompl_parc_demo" --robots -2
+expect 2 "robots must be a whole number from 1 to 20000 (got '100000')" "$bin/ompl_parc_demo" --robots 100000
 expect 2 "parameter 'workers' must be a whole number from 1 to 64 (got '-1')" "$bin/ompl_parc_demo" --planner parc --workers -1
 expect 2 "parameter 'workers' must be a whole number from 1 to 64 (got '1000')" \
     "$bin/ompl_parc_demo" --planner parc --param workers=1000

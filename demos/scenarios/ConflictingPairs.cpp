@@ -23,6 +23,7 @@ std::size_t ompl_parc::scenarios::countConflictingPairs(const MultiRobotProblem 
         plan.setPath(r, path);
     }
     ConflictDetector detector(si);
+    detector.discoverPairs(plan);  // no planning to stop: complete
     std::vector<std::size_t> pairs(detector.getPairCount());
     std::iota(pairs.begin(), pairs.end(), 0);
     return detector.scan(plan, pairs, 0, plan.getMakespan() + 1, false).size();

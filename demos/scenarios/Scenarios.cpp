@@ -1,5 +1,6 @@
 #include "ompl_parc/scenarios/Scenarios.h"
 
+#include "ompl_parc/model/TeamLimit.h"
 #include "ompl_parc/robots/DiscRobot.h"
 #include "ompl_parc/robots/PlanarArm.h"
 #include "ompl_parc/scenarios/PandaCage.h"
@@ -175,6 +176,7 @@ namespace ompl_parc::scenarios
                 valid += (valid.empty() ? "" : ", ") + n;
             throw ompl::Exception("Scenarios", "unknown scenario '" + name + "' (valid: " + valid + ")");
         }
+        checkTeamSize(robots, "scenario '" + name + "'");  // before the robots are built
         return it->second(robots, resolution, task);
     }
 

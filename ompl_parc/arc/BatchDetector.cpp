@@ -9,7 +9,6 @@
 #include <atomic>
 #include <cstddef>
 #include <limits>
-#include <numeric>
 
 ompl_parc::BatchDetector::BatchDetector(ConflictDetector &detector, WorkerPool &pool, std::size_t horizon,
                                         std::size_t capacity, bool optimistic)
@@ -37,9 +36,16 @@ void ompl_parc::BatchDetector::setCapacity(std::size_t capacity)
 
 void ompl_parc::BatchDetector::reset()
 {
-    live_.resize(detector_.getPairCount());
-    std::iota(live_.begin(), live_.end(), std::size_t{0});
-    isLive_.assign(detector_.getPairCount(), 1);
+    live_.clear();
+    isLive_.clear();
+    addNewPairs();
+}
+
+void ompl_parc::BatchDetector::addNewPairs()
+{
+    for (std::size_t p = isLive_.size(); p < detector_.getPairCount(); ++p)
+        live_.push_back(p);
+    isLive_.resize(detector_.getPairCount(), 1);
 }
 
 std::size_t ompl_parc::BatchDetector::chunkSize(std::size_t live) const
@@ -55,16 +61,11 @@ std::size_t ompl_parc::BatchDetector::chunkSize(std::size_t live) const
 void ompl_parc::BatchDetector::invalidate(std::size_t robot, std::size_t timestep)
 {
     detector_.invalidate(robot, timestep);
-    const std::size_t robots = detector_.getRobotCount();
-    for (std::size_t other = 0; other < robots; ++other)
-        if (other != robot)
+    for (std::size_t p : detector_.getPairsOf(robot))
+        if (!isLive_[p])
         {
-            const std::size_t p = detector_.pairIndex(std::min(robot, other), std::max(robot, other));
-            if (!isLive_[p])
-            {
-                isLive_[p] = 1;
-                live_.push_back(p);
-            }
+            isLive_[p] = 1;
+            live_.push_back(p);
         }
 }
 
@@ -72,6 +73,12 @@ ompl_parc::DetectedBatch ompl_parc::BatchDetector::detect(const MultiRobotPlan &
                                                           std::size_t window,
                                                           const ompl::base::PlannerTerminationCondition &ptc)
 {
+    {
+        const StopSignal::Scope scope(ptc);
+        if (!detector_.discoverPairs(plan))
+            return {};
+    }
+    addNewPairs();
     ConflictBatch batch(optimistic_, capacity_, plan.getRobotCount());
     // A batch of one is the earliest conflict: scans may stop at the first timestep with one.
     const bool earliestOnly = capacity_ == 1;

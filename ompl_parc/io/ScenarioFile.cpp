@@ -1,6 +1,7 @@
 #include "ompl_parc/io/ScenarioFile.h"
 
 #include "ompl_parc/io/JsonFields.h"
+#include "ompl_parc/model/TeamLimit.h"
 #include "ompl_parc/robots/BuiltinModels.h"
 #include "ompl_parc/robots/DiscRobot.h"
 #include "ompl_parc/robots/PlanarArm.h"
@@ -481,6 +482,7 @@ ompl_parc::MultiRobotProblem ompl_parc::ScenarioFile::fromJson(const std::string
     const json &robots = field(doc, "robots", "scenario");
     if (!robots.is_array() || robots.empty())
         fail("robots must be a non-empty array");
+    checkTeamSize(robots.size(), "scenario file");  // before the robots are built
     std::vector<RobotPtr> team;
     std::vector<std::vector<double>> starts(robots.size()), goals(robots.size());
     std::map<std::string, std::size_t> names;

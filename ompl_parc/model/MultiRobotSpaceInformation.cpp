@@ -3,6 +3,7 @@
 #include "ompl_parc/collision/CapsuleCollision.h"
 #include "ompl_parc/collision/CollidingPairSweep.h"
 #include "ompl_parc/model/MultiRobotValidityChecker.h"
+#include "ompl_parc/model/TeamLimit.h"
 #include "ompl_parc/robots/RakeMotionValidator.h"
 #include "ompl_parc/statespaces/SpaceRegistryLock.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
@@ -24,6 +25,7 @@ namespace
     {
         if (robots.empty())
             throw ompl::Exception("MultiRobotSpaceInformation", "a team needs at least one robot");
+        ompl_parc::checkTeamSize(robots.size(), "MultiRobotSpaceInformation");
         std::set<std::string> names;
         for (const auto &robot : robots)
         {

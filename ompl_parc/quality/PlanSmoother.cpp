@@ -166,7 +166,6 @@ bool ompl_parc::PlanSmoother::tryShortcut(MultiRobotPlan &plan, const std::vecto
 bool ompl_parc::PlanSmoother::keepIfClear(MultiRobotPlan &plan, const std::vector<std::size_t> &team,
                                           std::vector<TimedPath> changed, std::size_t t1, std::size_t *blocker)
 {
-    std::vector<std::size_t> pairs;
     for (std::size_t k = 0; k < team.size(); ++k)
     {
         const std::size_t r = team[k];
@@ -174,13 +173,24 @@ bool ompl_parc::PlanSmoother::keepIfClear(MultiRobotPlan &plan, const std::vecto
         plan.setPath(r, std::move(changed[k]));
         changed[k] = std::move(old);
         detector_->restart(r, t1);
-        for (std::size_t other = 0; other < plan.getRobotCount(); ++other)
-            if (other != r && (std::find(team.begin(), team.end(), other) == team.end() || other > r))
-                pairs.push_back(detector_->pairIndex(std::min(r, other), std::max(r, other)));
     }
-    const auto conflicts = detector_->scan(plan, pairs, t1, plan.getMakespan() + 1, true);
-    const bool clear = conflicts.empty() && std::all_of(pairs.begin(), pairs.end(),
-                                                        [&](std::size_t p) { return detector_->isSettled(plan, p); });
+    std::vector<Conflict> conflicts;
+    bool clear = false;
+    if (detector_->discoverPairs(plan))  // else the planning stopped: the change is not known to be clear
+    {
+        std::vector<std::size_t> pairs;
+        for (std::size_t r : team)
+            for (std::size_t p : detector_->getPairsOf(r))
+            {
+                const auto [i, j] = detector_->getPair(p);
+                const std::size_t other = i == r ? j : i;
+                if (std::find(team.begin(), team.end(), other) == team.end() || other > r)
+                    pairs.push_back(p);
+            }
+        conflicts = detector_->scan(plan, pairs, t1, plan.getMakespan() + 1, true);
+        clear = conflicts.empty() && std::all_of(pairs.begin(), pairs.end(),
+                                                 [&](std::size_t p) { return detector_->isSettled(plan, p); });
+    }
     if (clear)
         return true;
     for (std::size_t k = 0; k < team.size(); ++k)

@@ -6,10 +6,6 @@
 
 namespace ompl_parc
 {
-    /** \brief The largest team a tool or benchmark configuration accepts: far above every built-in scenario's sizes
-        (Planar Cross goes to 256, Mobile Cross runs at 1024), below what the pair bookkeeping of a team could
-        not hold (about 24 bytes per robot pair). */
-    constexpr std::uint64_t MAX_ROBOTS = 10000;
     /** \brief The largest task (instance) number a tool or benchmark configuration accepts. */
     constexpr std::uint64_t MAX_TASK = 1000000;
 

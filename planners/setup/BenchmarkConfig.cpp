@@ -1,5 +1,6 @@
 #include "ompl_parc/planners/setup/BenchmarkConfig.h"
 
+#include "ompl_parc/model/TeamLimit.h"
 #include "ompl_parc/planners/setup/PlannerRegistry.h"
 #include "ompl_parc/util/NameList.h"
 #include "ompl_parc/util/ParseNumber.h"

@@ -161,6 +161,12 @@ def test_bad_input_raises_value_error_with_the_tools_message(tmp_path):
         ompl_parc.team([ompl_parc.disc("r", -1, (0, 0), (1, 1))])
 
 
+def test_a_team_over_the_limit_is_refused_before_it_is_built():
+    # Each robot costs memory before any planning: the limit is checked first, as the tools check theirs.
+    with pytest.raises(ValueError, match="a team of 1000000 robots is over the limit of 20000"):
+        ompl_parc.scenario("mobile_cross", robots=10**6)
+
+
 def test_a_short_limit_returns_promptly_as_a_timeout():
     problem = ompl_parc.scenario("panda_cage", robots=16, task=3)
     start = time.monotonic()
