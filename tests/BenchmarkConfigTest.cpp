@@ -86,7 +86,7 @@ TEST(BenchmarkConfig, BadInputIsOneLineNamingTheValidChoices)
     EXPECT_TRUE(has(reason(PROBLEM + BENCHMARK + "workers = -1\n" + planner), workers + " (got '-1')"));
     EXPECT_TRUE(has(reason(PROBLEM + BENCHMARK + "workers = 0\n" + planner), workers + " (got '0')"));
     EXPECT_TRUE(has(reason("[problem]\nname = c\nscenario = mobile_cross\nrobots = 1\n" + BENCHMARK + planner),
-                    "[problem] robots must be a whole number from 2 to 10000 (got '1')"));
+                    "[problem] robots must be a whole number from 2 to 20000 (got '1')"));
     // The last run's seed (seed + run_count - 1) must fit in 32 bits, not wrap round to 0; limits are finite.
     EXPECT_TRUE(has(reason(PROBLEM + BENCHMARK + "seed = 4294967295\n" + planner),
                     "[benchmark] seed must be a whole number from 1 to"));

@@ -126,10 +126,12 @@ namespace
     {
         EXPECT_GE(tally.denseRejected, atLeastRejected);
         EXPECT_GE(tally.denseAccepted, 10u);
-        ::testing::Test::RecordProperty("rejected_only_by_the_fast_validator", static_cast<int>(tally.onlyFastRejected));
+        ::testing::Test::RecordProperty("rejected_only_by_the_fast_validator",
+                                        static_cast<int>(tally.onlyFastRejected));
     }
 
-    /** Checks one plan both ways: whatever dense sampling rejects, the fast validator rejects. */
+    /** Checks one plan both ways: whatever dense sampling rejects, the fast validator rejects, with every value
+        of the substeps option (it sets the fewest samples, never whether instants between timesteps are checked). */
     void compare(const MultiRobotSpaceInformationPtr &si, const MultiRobotPlan &plan, Tally &tally)
     {
         const MultiRobotProblem problem = test::problemOfPlan(si, plan);
@@ -139,6 +141,13 @@ namespace
         {
             ++tally.denseRejected;
             EXPECT_FALSE(fast.valid) << "accepted a plan dense sampling rejects";
+            for (unsigned int substeps : {0u, 1u, 2u})
+            {
+                ValidationOptions options;
+                options.substeps = substeps;
+                EXPECT_FALSE(SolutionValidator(problem, options).validate(plan).valid)
+                    << "accepted with substeps " << substeps << " a plan dense sampling rejects";
+            }
         }
         else
         {
