@@ -62,6 +62,7 @@ ompl_parc::ArcPlannerBase::ArcPlannerBase(const ob::SpaceInformationPtr &si, con
                               "mobile,planar,panda");
     smoothing_.declareParameter(*this);
     smoothing_.setReplanner([] { return PrioritizedSTRRTSolver::makeReplanner(); });
+    smoothing_.setTeamReplanShare(0.5);
     declareParam<unsigned int>("window", this, &ArcPlannerBase::setWindow, &ArcPlannerBase::getWindow, "1:10:2000");
     declareParam<std::string>("growth", this, &ArcPlannerBase::setGrowth, &ArcPlannerBase::getGrowth,
                               "linear,exponential");

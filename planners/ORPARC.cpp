@@ -23,6 +23,7 @@ ompl_parc::ORPARC::ORPARC(const ob::SpaceInformationPtr &si)
     params().include(prototype_->params());
     race_.declareInstances(params());
     smoothing_.setReplanner([] { return PrioritizedSTRRTSolver::makeReplanner(); });
+    smoothing_.setTeamReplanShare(0.5);
     declareParam<unsigned int>("total_workers", this, &ORPARC::setTotalWorkers, &ORPARC::getTotalWorkers, "1:1:64");
     declareParam<std::string>("objective", this, &ORPARC::setObjective, &ORPARC::getObjective,
                               "first,makespan,sum_of_costs");

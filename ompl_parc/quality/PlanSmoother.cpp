@@ -52,6 +52,12 @@ ompl_parc::SmoothingReport ompl_parc::PlanSmoother::smooth(MultiRobotPlan &plan,
     for (std::size_t i = 0; i < n; ++i)
         bound_[i] = PlanQuality::straightLineSteps(*si_, plan, i);
 
+    if (replanner_ && teamReplanTime_ > 0.)
+    {
+        report.teamReplanned = true;
+        report.teamReplanKept = tryTeamReplan(
+            plan, ob::plannerOrTerminationCondition(ptc, ob::timedPlannerTerminationCondition(teamReplanTime_)));
+    }
     for (std::size_t stalled = 0; stalled < getStallLimit() && !ptc();)
     {
         const auto robot = pickRobot(plan);
@@ -188,8 +194,8 @@ bool ompl_parc::PlanSmoother::keepIfClear(MultiRobotPlan &plan, const std::vecto
                     pairs.push_back(p);
             }
         conflicts = detector_->scan(plan, pairs, t1, plan.getMakespan() + 1, true);
-        clear = conflicts.empty() && std::all_of(pairs.begin(), pairs.end(),
-                                                 [&](std::size_t p) { return detector_->isSettled(plan, p); });
+        clear = conflicts.empty() &&
+                std::all_of(pairs.begin(), pairs.end(), [&](std::size_t p) { return detector_->isSettled(plan, p); });
     }
     if (clear)
         return true;
@@ -231,6 +237,32 @@ bool ompl_parc::PlanSmoother::tryReplan(MultiRobotPlan &plan, std::size_t robot,
     std::vector<TimedPath> changed{plan.getPath(robot)};
     changed.front().splice(t1, arrival, patch.paths.front());
     return keepIfClear(plan, {robot}, std::move(changed), t1, nullptr);
+}
+
+bool ompl_parc::PlanSmoother::tryTeamReplan(MultiRobotPlan &plan, const ob::PlannerTerminationCondition &ptc)
+{
+    Subproblem whole;
+    whole.global = true;
+    for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
+    {
+        whole.robots.push_back(i);
+        whole.starts.emplace_back(plan.getDimension(i));
+        plan.getConfig(i, 0, whole.starts.back().data());
+        whole.goals.emplace_back(plan.getDimension(i));
+        plan.getConfig(i, plan.getArrival(i), whole.goals.back().data());
+    }
+    whole.windowEnd = plan.getMakespan();
+    Patch patch;
+    const auto seed = static_cast<std::uint_fast32_t>(rng_.uniformInt(1, std::numeric_limits<int>::max()));
+    if (!replanner_->solve(*si_, whole, ptc, seed, patch))
+        return false;
+    MultiRobotPlan candidate(*si_);
+    for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
+        candidate.setPath(i, patch.paths[i]);
+    if (std::make_pair(candidate.getMakespan(), candidate.getSumOfCosts()) >=
+        std::make_pair(plan.getMakespan(), plan.getSumOfCosts()))
+        return false;
+    return keepIfClear(plan, whole.robots, std::move(patch.paths), 0, nullptr);
 }
 
 bool ompl_parc::PlanSmoother::motionValid(std::size_t robot, const double *from, const double *to)

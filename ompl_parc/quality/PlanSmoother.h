@@ -26,8 +26,13 @@ namespace ompl_parc
         std::size_t attempts{0}, shortcuts{0}, compositeShortcuts{0}, straightenings{0};
         /** \brief Replans tried and kept (PlanSmoother::setReplanner()). */
         std::size_t replans{0}, replansKept{0};
+        /** \brief Whether the whole team was replanned (PlanSmoother::setTeamReplanTime()), and whether it was kept. */
+        bool teamReplanned{false}, teamReplanKept{false};
         /** \brief Changes kept, of every kind. */
-        std::size_t kept() const { return shortcuts + compositeShortcuts + straightenings + replansKept; }
+        std::size_t kept() const
+        {
+            return shortcuts + compositeShortcuts + straightenings + replansKept + (teamReplanKept ? 1 : 0);
+        }
         double seconds{0.};
     };
 
@@ -69,6 +74,14 @@ namespace ompl_parc
             there, a replan can take another way or another order through a crossing. Null: shortcuts only. */
         void setReplanner(SubproblemSolverPtr solver) { replanner_ = std::move(solver); }
 
+        /** \brief First spend up to \e seconds replanning the whole team with the replanner, robot after robot
+            among those planned before (prioritised planning from the plan's starts to its goals), and keep that
+            plan if it has a shorter makespan (or the same and a smaller sum of costs) and is conflict-free. A
+            repair's detours and waits are not local: where a robot waited for a long chain of repairs, shortcuts
+            and one-robot replans among the others' long paths cannot undo them, a fresh order can. 0 (the
+            default): no team replan. */
+        void setTeamReplanTime(double seconds) { teamReplanTime_ = seconds; }
+
         /** \brief Attempts in a row without gain before a replan (with a replanner). */
         static constexpr std::size_t REPLAN_PERIOD = 16;
         /** \brief The replanner's iteration cap per replan. */
@@ -91,6 +104,9 @@ namespace ompl_parc
         bool tryReplan(MultiRobotPlan &plan, std::size_t robot, std::size_t t1,
                        const ompl::base::PlannerTerminationCondition &ptc);
 
+        /** \brief Replan the whole team (setTeamReplanTime()) under \e ptc; keep it if better and conflict-free. */
+        bool tryTeamReplan(MultiRobotPlan &plan, const ompl::base::PlannerTerminationCondition &ptc);
+
         /** \brief Keep \e changed (new paths of the robots of \e team, the plan unchanged before \e t1) if it is
             conflict-free, else put the old paths back; on a conflict, \e blocker (if given) receives the first
             robot outside the team hit. */
@@ -111,6 +127,7 @@ namespace ompl_parc
 
         MultiRobotSpaceInformationPtr si_;
         SubproblemSolverPtr replanner_;
+        double teamReplanTime_{0.};
         /** \brief The scans of the plan being smoothed (one per smooth(): its frontiers are that plan's). */
         std::optional<ConflictDetector> detector_;
         ompl::RNG rng_;

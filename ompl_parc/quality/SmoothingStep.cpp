@@ -36,7 +36,10 @@ void ompl_parc::SmoothingStep::apply(const MultiRobotSpaceInformationPtr &si, Mu
     {
         PlanSmoother smoother(si, seed);
         if (replanner_)
+        {
             smoother.setReplanner(replanner_());
+            smoother.setTeamReplanTime(teamReplanShare_ * budget_);
+        }
         {
             const InnerPlannerLog::Scope inner;  // the replans' planners
             report_ = smoother.smooth(plan, budget);

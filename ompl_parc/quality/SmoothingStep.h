@@ -31,6 +31,11 @@ namespace ompl_parc
             would change the planning of a solve that does not smooth.) */
         void setReplanner(std::function<SubproblemSolverPtr()> factory) { replanner_ = std::move(factory); }
 
+        /** \brief The share of the budget the smoother may spend replanning the whole team first
+            (PlanSmoother::setTeamReplanTime()); 0 (the default): none. A planner that plans prioritised itself
+            has nothing to gain from it. */
+        void setTeamReplanShare(double share) { teamReplanShare_ = share; }
+
         void setBudget(double seconds);
         double getBudget() const { return budget_; }
 
@@ -51,7 +56,7 @@ namespace ompl_parc
                                   const std::optional<SmoothingReport> &smoothing, ompl::base::PlannerData &data);
 
       private:
-        double budget_{0.};
+        double budget_{0.}, teamReplanShare_{0.};
         std::function<SubproblemSolverPtr()> replanner_;
         std::optional<SmoothingReport> report_;
     };

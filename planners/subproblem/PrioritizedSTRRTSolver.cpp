@@ -93,9 +93,7 @@ ompl_parc::PrioritizedSTRRTSolver::PrioritizedSTRRTSolver(PrioritizedSTRRTSettin
 
 std::shared_ptr<ompl_parc::PrioritizedSTRRTSolver> ompl_parc::PrioritizedSTRRTSolver::makeReplanner()
 {
-    PrioritizedSTRRTSettings settings;
-    settings.lattice = false;
-    return std::make_shared<PrioritizedSTRRTSolver>(settings);
+    return std::make_shared<PrioritizedSTRRTSolver>(PrioritizedSTRRTSettings());
 }
 
 std::vector<std::size_t> ompl_parc::PrioritizedSTRRTSolver::priorityOrder(std::size_t size,

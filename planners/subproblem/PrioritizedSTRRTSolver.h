@@ -64,8 +64,10 @@ namespace ompl_parc
         /** \brief Throws ompl::Exception for settings STRRTstar rejects. */
         explicit PrioritizedSTRRTSolver(PrioritizedSTRRTSettings settings = PrioritizedSTRRTSettings());
 
-        /** \brief The solver PlanSmoother replans with: ST-RRT alone. The smoother keeps a replanned piece only if it
-            arrives earlier, and a lattice path, which moves along the axes, seldom does. */
+        /** \brief The solver PlanSmoother replans with (one robot's tail, or the whole team): PP-ST-RRT's defaults,
+            the lattice for translating robots (discs) first. Its axis-aligned paths are seldom shorter than a
+            straight piece, but among the waits and detours a repair leaves they often arrive much earlier, and
+            the shortcuts that follow straighten them. */
         static std::shared_ptr<PrioritizedSTRRTSolver> makeReplanner();
 
         std::string getName() const override { return "pp-st-rrt"; }
