@@ -190,6 +190,20 @@ TEST(UrdfArm, HostileUrdfsAreRefusedWithoutHangingOrOverflowing)
                          "<child link=\"side\"/></joint><joint name=\"again\" type=\"fixed\"><parent link=\"side\"/>"
                          "<child link=\"side\"/></joint>"),
                 "the URDF's joints form a loop through link 'side'");
+    // Two links that are each other's parent, off the chain: urdfdom linked them into a cycle it never freed
+    // (found by fuzzing); refused before urdfdom reads the URDF. So is a link with two parents.
+    const std::string pair =
+        "<link name=\"p\"/><link name=\"q\"/><joint name=\"pq\" type=\"fixed\"><parent "
+        "link=\"p\"/><child link=\"q\"/></joint><joint name=\"qp\" type=\"fixed\"><parent "
+        "link=\"q\"/><child link=\"p\"/></joint>";
+    expectError(smallArm("revolute", "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>",
+                         "<box size=\"0.1 0.1 0.4\"/>", pair),
+                "the URDF's joints form a loop through link");
+    expectError(smallArm("revolute", "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>",
+                         "<box size=\"0.1 0.1 0.4\"/>",
+                         "<joint name=\"again\" type=\"fixed\"><parent link=\"base\"/><child link=\"lower\"/>"
+                         "</joint>"),
+                "link 'lower' is the child of two joints");
     // A negative radius is not a smaller shape.
     expectError(smallArm("revolute", "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>",
                          "<cylinder radius=\"-0.05\" length=\"0.4\"/>"),

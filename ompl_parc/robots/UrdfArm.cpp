@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <mutex>
 #include <set>
 
@@ -70,10 +71,13 @@ namespace
         return t;
     }
 
-    /** Refuses a `<collision>` element whose geometry urdfdom would read only in part: urdfdom takes the first
+    /** The checks urdfdom cannot be left to, on the URDF's XML before urdfdom builds anything. Joints that lead
+        back to a link already on the way (a loop), or a link that is the child of two joints: urdfdom links such a
+        tree into a cycle of owners and, when it then fails (no root link), returns nothing it could be freed
+        through. And a `<collision>` element whose geometry urdfdom would read only in part: it takes the first
         shape of a `<geometry>` and the first `<geometry>` of a `<collision>` and drops the rest without a word.
         (Elements it cannot read at all it reports as errors, which parseChain() refuses.) */
-    void checkCollisionElements(const std::string &urdfXml)
+    void checkStructure(const std::string &urdfXml)
     {
         TiXmlDocument document;
         document.Parse(urdfXml.c_str());
@@ -88,13 +92,13 @@ namespace
                 n += name == nullptr || e->ValueStr() == name;
             return n;
         };
+        const auto text = [](const char *value) { return std::string(value != nullptr ? value : ""); };
         for (const TiXmlElement *link = robot->FirstChildElement("link"); link != nullptr;
              link = link->NextSiblingElement("link"))
             for (const TiXmlElement *collision = link->FirstChildElement("collision"); collision != nullptr;
                  collision = collision->NextSiblingElement("collision"))
             {
-                const char *name = link->Attribute("name");
-                const std::string where = "link '" + std::string(name != nullptr ? name : "") + "'";
+                const std::string where = "link '" + text(link->Attribute("name")) + "'";
                 if (count(*collision, "geometry") != 1 || count(*collision, "origin") > 1)
                     throw ompl::Exception(CONTEXT, "malformed URDF: " + where +
                                                        " has a <collision> without exactly one <geometry> (or with "
@@ -104,11 +108,55 @@ namespace
                                                        " has a <collision> whose <geometry> does not hold exactly "
                                                        "one shape");
             }
+        // The tree: each link's parent link, then a walk up from every link, each link walked once.
+        std::map<std::string, std::string> parentOf;
+        for (const TiXmlElement *joint = robot->FirstChildElement("joint"); joint != nullptr;
+             joint = joint->NextSiblingElement("joint"))
+        {
+            const TiXmlElement *parent = joint->FirstChildElement("parent"), *child = joint->FirstChildElement("child");
+            if (parent == nullptr || child == nullptr)
+                return;  // urdfdom reports it
+            const std::string from = text(parent->Attribute("link")), to = text(child->Attribute("link"));
+            if (from == to)
+                throw ompl::Exception(CONTEXT, "the URDF's joints form a loop through link '" + to + "'");
+            if (!parentOf.emplace(to, from).second)
+                throw ompl::Exception(CONTEXT, "malformed URDF: link '" + to + "' is the child of two joints");
+        }
+        enum class Walk
+        {
+            ON_PATH,
+            DONE
+        };
+        std::map<std::string, Walk> walked;
+        std::vector<std::string> path;
+        for (const auto &entry : parentOf)
+        {
+            path.clear();
+            for (std::string link = entry.first;;)
+            {
+                const auto seen = walked.find(link);
+                if (seen != walked.end())
+                {
+                    if (seen->second == Walk::ON_PATH)
+                        throw ompl::Exception(CONTEXT, "the URDF's joints form a loop through link '" + link + "'");
+                    break;
+                }
+                walked.emplace(link, Walk::ON_PATH);
+                path.push_back(link);
+                const auto up = parentOf.find(link);
+                if (up == parentOf.end())
+                    break;
+                link = up->second;
+            }
+            for (const std::string &link : path)
+                walked[link] = Walk::DONE;
+        }
     }
 
-    /** urdfdom's links own their child links (shared_ptr): the joints of a URDF that loop (refused below) make a
-        cycle of owners that would never be freed. Clears every link's children when the parse is done with the
-        model, normally or by an exception. */
+    /** urdfdom's links own their child links (shared_ptr): joints that loop would make a cycle of owners that is
+        never freed. checkStructure() refuses such URDFs before urdfdom reads them, where it can read the XML;
+        this clears every link's children when the parse is done with a model, normally or by an exception, so
+        that no model urdfdom returns can keep a cycle alive either. */
     struct UnlinkedOnExit
     {
         const urdf::ModelInterfaceSharedPtr &model;
@@ -208,6 +256,7 @@ namespace
 ompl_parc::UrdfArm::Chain ompl_parc::UrdfArm::parseChain(const std::string &urdfXml, const std::string &baseLink,
                                                          const std::string &tipLink)
 {
+    checkStructure(urdfXml);
     urdf::ModelInterfaceSharedPtr model;
     const UnlinkedOnExit unlink{model};
     {
@@ -228,7 +277,6 @@ ompl_parc::UrdfArm::Chain ompl_parc::UrdfArm::parseChain(const std::string &urdf
                 CONTEXT, "malformed URDF: " +
                              (errors.first().empty() ? std::string("urdfdom could not parse it") : errors.first()));
     }
-    checkCollisionElements(urdfXml);
     const auto base = model->getLink(baseLink), tip = model->getLink(tipLink);
     if (!base)
         throw ompl::Exception(CONTEXT, "URDF '" + model->getName() + "' has no base link '" + baseLink + "'");
