@@ -138,9 +138,12 @@ namespace
                 return;
             }
         }
-        std::cout << "smoothing  " << report.seconds << " s (--smooth " << budget << "): " << report.kept() << " of "
-                  << report.attempts << " shortcuts and replans kept; before it, makespan " << report.makespanBefore
-                  << ", sum of costs " << report.sumOfCostsBefore << "\n";
+        const std::size_t teamKept = report.teamReplanKept ? 1 : 0;
+        std::cout << "smoothing  " << report.seconds << " s (--smooth " << budget << "): "
+                  << (report.teamReplanned ? (teamKept != 0 ? "team replanned, " : "team replan not kept, ") : "")
+                  << report.kept() - teamKept << " of " << report.attempts
+                  << " shortcuts and replans kept; before it, makespan " << report.makespanBefore << ", sum of costs "
+                  << report.sumOfCostsBefore << "\n";
     }
 }  // namespace
 
