@@ -120,7 +120,11 @@ namespace
             report.makespanBefore = count("makespan_unsmoothed INTEGER");
             report.sumOfCostsBefore = count("sum_of_costs_unsmoothed INTEGER");
             report.attempts = count("smoothing_attempts INTEGER");
-            report.shortcuts = count("smoothing_shortcuts INTEGER");  // every kind kept, as kept() counts them
+            const std::string team = propertyOf(planner, "smoothing_team_replan STRING");
+            report.teamReplanned = team == "kept" || team == "not kept";
+            report.teamReplanKept = team == "kept";
+            // Every kind kept, as kept() counts them, the team replan apart.
+            report.shortcuts = count("smoothing_shortcuts INTEGER") - (report.teamReplanKept ? 1 : 0);
         }
         else
         {

@@ -67,6 +67,8 @@ void ompl_parc::SmoothingStep::addProperties(const MultiRobotSpaceInformation &s
         p["smoothing_time REAL"] = std::to_string(smoothing->seconds);
         p["smoothing_attempts INTEGER"] = std::to_string(smoothing->attempts);
         p["smoothing_shortcuts INTEGER"] = std::to_string(smoothing->kept());
+        p["smoothing_team_replan STRING"] =
+            smoothing->teamReplanned ? (smoothing->teamReplanKept ? "kept" : "not kept") : "none";
         p["makespan_unsmoothed INTEGER"] = std::to_string(smoothing->makespanBefore);
         p["sum_of_costs_unsmoothed INTEGER"] = std::to_string(smoothing->sumOfCostsBefore);
     }

@@ -51,7 +51,8 @@ namespace ompl_parc
 
         /** \brief Add \e plan's quality (makespan, sum_of_costs, their straight-line bounds and ratios, PlanQuality)
             and, with a \e smoothing report (the one that made \e plan), smoothing_time, smoothing_attempts,
-            smoothing_shortcuts and the unsmoothed makespan and sum of costs. Nothing for an empty plan. */
+            smoothing_shortcuts (every change kept), smoothing_team_replan (none, kept or not kept) and the unsmoothed
+            makespan and sum of costs. Nothing for an empty plan. */
         static void addProperties(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan,
                                   const std::optional<SmoothingReport> &smoothing, ompl::base::PlannerData &data);
 
