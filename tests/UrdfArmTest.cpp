@@ -204,6 +204,12 @@ TEST(UrdfArm, HostileUrdfsAreRefusedWithoutHangingOrOverflowing)
                          "<joint name=\"again\" type=\"fixed\"><parent link=\"base\"/><child link=\"lower\"/>"
                          "</joint>"),
                 "link 'lower' is the child of two joints");
+    // The same loop after a joint urdfdom cannot read (no <child>): still refused before urdfdom links the rest.
+    expectError(smallArm("revolute", "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>",
+                         "<box size=\"0.1 0.1 0.4\"/>",
+                         "<joint name=\"bad\" type=\"fixed\"><parent link=\"tip\"/></joint><joint name=\"self\" "
+                         "type=\"fixed\"><parent link=\"lower\"/><child link=\"lower\"/></joint>"),
+                "the URDF's joints form a loop through link 'lower'");
     // A negative radius is not a smaller shape.
     expectError(smallArm("revolute", "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>",
                          "<cylinder radius=\"-0.05\" length=\"0.4\"/>"),

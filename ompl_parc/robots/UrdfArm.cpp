@@ -115,7 +115,7 @@ namespace
         {
             const TiXmlElement *parent = joint->FirstChildElement("parent"), *child = joint->FirstChildElement("child");
             if (parent == nullptr || child == nullptr)
-                return;  // urdfdom reports it
+                continue;  // urdfdom reports it (after linking the other joints: their loops are refused here)
             const std::string from = text(parent->Attribute("link")), to = text(child->Attribute("link"));
             if (from == to)
                 throw ompl::Exception(CONTEXT, "the URDF's joints form a loop through link '" + to + "'");
