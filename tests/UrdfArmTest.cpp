@@ -210,6 +210,13 @@ TEST(UrdfArm, HostileUrdfsAreRefusedWithoutHangingOrOverflowing)
                          "<joint name=\"bad\" type=\"fixed\"><parent link=\"tip\"/></joint><joint name=\"self\" "
                          "type=\"fixed\"><parent link=\"lower\"/><child link=\"lower\"/></joint>"),
                 "the URDF's joints form a loop through link 'lower'");
+    // Text that is not UTF-8: a lead byte at the end made TinyXML (urdfdom's parser) read past the text (found by
+    // fuzzing); a NUL would end the text TinyXML sees early.
+    expectError(smallArm() + "<!-- \xd3", "malformed URDF: not UTF-8 text (byte");
+    expectError(smallArm() + std::string(1, '\0') + "<x/>", "malformed URDF: not UTF-8 text (byte");
+    expectError(smallArm() + "<!-- \xe2\x82 -->", "malformed URDF: not UTF-8 text (byte");
+    EXPECT_NO_THROW(UrdfArm("arm", nullptr, smallArm() + "<!-- \xe2\x82\xac \xc3\xa9 -->", "base", "tip",
+                            Eigen::Isometry3d::Identity()));
     // A negative radius is not a smaller shape.
     expectError(smallArm("revolute", "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>",
                          "<cylinder radius=\"-0.05\" length=\"0.4\"/>"),

@@ -71,6 +71,29 @@ namespace
         return t;
     }
 
+    /** The offset of the first byte of \e text that does not belong to a complete UTF-8 character (a NUL counts as
+        one), or std::string::npos. TinyXML, urdfdom's parser and ours, reads a character's continuation bytes
+        without looking for the end of the text: a lead byte at the end made it read past it (found by fuzzing). */
+    std::size_t firstInvalidUtf8(const std::string &text)
+    {
+        for (std::size_t k = 0; k < text.size();)
+        {
+            const auto lead = static_cast<unsigned char>(text[k]);
+            const std::size_t length = lead < 0x80           ? 1
+                                       : (lead >> 5) == 0x6  ? 2
+                                       : (lead >> 4) == 0xE  ? 3
+                                       : (lead >> 3) == 0x1E ? 4
+                                                             : 0;
+            if (lead == 0 || length == 0 || length > text.size() - k)
+                return k;
+            for (std::size_t j = 1; j < length; ++j)
+                if ((static_cast<unsigned char>(text[k + j]) & 0xC0) != 0x80)
+                    return k;
+            k += length;
+        }
+        return std::string::npos;
+    }
+
     /** The checks urdfdom cannot be left to, on the URDF's XML before urdfdom builds anything. Joints that lead
         back to a link already on the way (a loop), or a link that is the child of two joints: urdfdom links such a
         tree into a cycle of owners and, when it then fails (no root link), returns nothing it could be freed
@@ -256,6 +279,8 @@ namespace
 ompl_parc::UrdfArm::Chain ompl_parc::UrdfArm::parseChain(const std::string &urdfXml, const std::string &baseLink,
                                                          const std::string &tipLink)
 {
+    if (const std::size_t bad = firstInvalidUtf8(urdfXml); bad != std::string::npos)
+        throw ompl::Exception(CONTEXT, "malformed URDF: not UTF-8 text (byte " + std::to_string(bad) + ")");
     checkStructure(urdfXml);
     urdf::ModelInterfaceSharedPtr model;
     const UnlinkedOnExit unlink{model};
