@@ -7,7 +7,6 @@
 #include <nlohmann/json.hpp>
 #include <ompl/util/Exception.h>
 
-#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <sstream>
@@ -114,20 +113,8 @@ namespace
 std::string ompl_parc::SolutionFile::toJson(const MultiRobotPlan &plan, const MultiRobotSpaceInformation &si)
 {
     // The file names the team's robots: a plan of another team would be written under wrong names and kinds.
-    if (plan.getRobotCount() != si.getRobotCount())
-        fail("the plan has " + std::to_string(plan.getRobotCount()) + " robots, the problem has " +
-             std::to_string(si.getRobotCount()));
-    if (std::abs(plan.getResolution() - si.getResolution()) > 1e-9)
-        fail("the plan's resolution differs from the problem's");
-    for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
-    {
-        if (plan.getDimension(i) != si.getRobot(i)->getDimension())
-            fail("the plan's robot " + std::to_string(i) + " has " + std::to_string(plan.getDimension(i)) +
-                 " coordinates, robot '" + si.getRobot(i)->getName() + "' has " +
-                 std::to_string(si.getRobot(i)->getDimension()));
-        if (plan.getPath(i).empty())
-            fail("the plan has no path for robot '" + si.getRobot(i)->getName() + "'");
-    }
+    if (const std::string mismatch = plan.checkTeam(si); !mismatch.empty())
+        fail(mismatch);
     // One robot per line: compact, yet a diff or a reader can still find a robot.
     std::string text = json{{"format", FORMAT}, {"version", VERSION}, {"resolution", plan.getResolution()}}.dump();
     text.pop_back();

@@ -45,6 +45,24 @@ ompl_parc::MultiRobotPlan::MultiRobotPlan(const MultiRobotSpaceInformation &si) 
         paths_.emplace_back(robot->getDimension());
 }
 
+std::string ompl_parc::MultiRobotPlan::checkTeam(const MultiRobotSpaceInformation &si) const
+{
+    if (getRobotCount() != si.getRobotCount())
+        return "plan has " + std::to_string(getRobotCount()) + " robots, problem has " +
+               std::to_string(si.getRobotCount());
+    if (std::abs(getResolution() - si.getResolution()) > 1e-9)
+        return "plan resolution " + std::to_string(getResolution()) + " differs from the problem's " +
+               std::to_string(si.getResolution());
+    for (std::size_t i = 0; i < getRobotCount(); ++i)
+    {
+        if (getDimension(i) != si.getRobot(i)->getDimension())
+            return "robot '" + si.getRobot(i)->getName() + "' has the wrong configuration size";
+        if (getStateCount(i) == 0)
+            return "robot '" + si.getRobot(i)->getName() + "' has no states";
+    }
+    return "";
+}
+
 void ompl_parc::MultiRobotPlan::setPath(std::size_t robot, TimedPath path)
 {
     if (path.getDimension() != getDimension(robot))

@@ -6,6 +6,7 @@
 
 #include <ompl/geometric/PathGeometric.h>
 
+#include <string>
 #include <vector>
 
 namespace ompl_parc
@@ -55,6 +56,11 @@ namespace ompl_parc
 
         /** \brief Replace a robot's path by the dense states \e flat (getDimension(robot) values per timestep). */
         void setRobotPath(std::size_t robot, const std::vector<double> &flat);
+
+        /** \brief Empty if this plan is one for the team of \e si (as many robots, its resolution, each robot's
+            configuration size, a path for every robot), else the first mismatch, e.g. "plan has 3 robots, problem
+            has 2": what the validator and the solution writer refuse. */
+        std::string checkTeam(const MultiRobotSpaceInformation &si) const;
         /** \brief Robot \e robot's states at timesteps 0..arrival, flat: for tests and small plans only. */
         std::vector<double> getRobotPath(std::size_t robot) const { return paths_.at(robot).toDense(); }
 

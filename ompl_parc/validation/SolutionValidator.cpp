@@ -603,20 +603,8 @@ ompl_parc::SolutionValidator::SolutionValidator(MultiRobotProblem problem, Valid
 
 std::string ompl_parc::SolutionValidator::checkStructure(const MultiRobotPlan &plan) const
 {
-    const auto &si = *problem_.getSpaceInformation();
-    if (plan.getRobotCount() != si.getRobotCount())
-        return "plan has " + std::to_string(plan.getRobotCount()) + " robots, problem has " +
-               std::to_string(si.getRobotCount());
-    if (std::abs(plan.getResolution() - si.getResolution()) > 1e-9)
-        return "plan resolution " + std::to_string(plan.getResolution()) + " differs from the problem's " +
-               std::to_string(si.getResolution());
-    for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
-    {
-        if (plan.getDimension(i) != si.getRobot(i)->getDimension())
-            return "robot '" + si.getRobot(i)->getName() + "' has the wrong configuration size";
-        if (plan.getStateCount(i) == 0)
-            return "robot '" + si.getRobot(i)->getName() + "' has no states";
-    }
+    if (std::string mismatch = plan.checkTeam(*problem_.getSpaceInformation()); !mismatch.empty())
+        return mismatch;
     if (plan.getMakespan() > MultiRobotPlan::MAX_TIMESTEP)
         return "plan's makespan " + std::to_string(plan.getMakespan()) + " is beyond the largest timestep accepted (" +
                std::to_string(MultiRobotPlan::MAX_TIMESTEP) + ")";

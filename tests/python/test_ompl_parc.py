@@ -116,9 +116,9 @@ def test_a_plan_of_another_team_is_not_written(tmp_path):
     eight = ompl_parc.scenario("mobile_cross", 8)
     plan = ompl_parc.solve(eight, "arc", seed=1).plan
     arms = ompl_parc.scenario("planar_cross", 8)
-    for problem, reason in ((ompl_parc.scenario("mobile_cross", 4), "the plan has 8 robots, the problem has 4"),
-                            (ompl_parc.scenario("mobile_cross", 16), "the plan has 8 robots, the problem has 16"),
-                            (arms, "coordinates")):
+    for problem, reason in ((ompl_parc.scenario("mobile_cross", 4), "plan has 8 robots, problem has 4"),
+                            (ompl_parc.scenario("mobile_cross", 16), "plan has 8 robots, problem has 16"),
+                            (arms, "has the wrong configuration size")):
         path = tmp_path / "solution.json"
         with pytest.raises(ValueError, match=reason):
             ompl_parc.write_solution(str(path), problem, plan)
