@@ -91,9 +91,13 @@ namespace
         }
         if (s == nullptr)
             return;
+        // The anytime phase has a line of its own (as smoothing, which planTime leaves out).
+        double after = 0.;
+        if (const auto *arc = dynamic_cast<const ArcPlannerBase *>(&planner); arc && arc->getImprovementReport())
+            after = arc->getImprovementReport()->seconds;
         std::cout << "stages     initial " << s->initialWall << " s, detection " << s->detectionWall
                   << " s, resolution " << s->resolutionWall << " s, other "
-                  << planTime - s->initialWall - s->detectionWall - s->resolutionWall
+                  << planTime - s->initialWall - s->detectionWall - s->resolutionWall - after
                   << " s (wall; other: reading the problem, building the solution path)\n"
                   << "conflicts  " << s->conflicts << " resolved, " << s->solverCalls << " solver calls, "
                   << s->expansions << " window expansions, " << s->teamGrowths << " robot-set growths, "
@@ -101,6 +105,12 @@ namespace
         if (parallel != nullptr)
             std::cout << "parallel   " << parallel->batches << " batches, " << parallel->repairAttempts
                       << " repair attempts (" << parallel->cancelledAttempts << " cancelled)\n";
+        if (const auto *arc = dynamic_cast<const ArcPlannerBase *>(&planner); arc && arc->getImprovementReport())
+            std::cout << "anytime    first solution after " << propertyOf(planner, "first_solution_time REAL")
+                      << " s, then " << arc->getImprovementReport()->seconds << " s in "
+                      << arc->getImprovementReport()->rounds << " rounds, "
+                      << arc->getImprovementReport()->improvements << " better plans by " << arc->getObjective()
+                      << "\n";
     }
 
     /** \brief The smoothing line: what the planner's own smoothing did (from its properties), or, for a planner

@@ -89,6 +89,8 @@ ompl_parc::ArcPlannerBase::ArcPlannerBase(const ob::SpaceInformationPtr &si, con
     declareParam<bool>("lattice_mapf", this, &ArcPlannerBase::setLatticeMapf, &ArcPlannerBase::getLatticeMapf, "0,1");
     declareParam<bool>("sequential", this, &ArcPlannerBase::setSequential, &ArcPlannerBase::getSequential, "0,1");
     declareParam<unsigned int>("seed", this, &ArcPlannerBase::setSeed, &ArcPlannerBase::getSeed);
+    declareParam<std::string>("objective", this, &ArcPlannerBase::setObjective, &ArcPlannerBase::getObjective,
+                              "first,makespan,sum_of_costs");
     for (const auto &[name, property] : progress_.properties())
         addPlannerProgressProperty(name, property);
 }
@@ -306,6 +308,9 @@ ob::PlannerStatus ompl_parc::ArcPlannerBase::solve(const ob::PlannerTerminationC
     statusMessage_.clear();
     smoothed_.reset();
     smoothing_.clear();
+    improvement_.reset();
+    firstSolutionTime_ = -1.;
+    solveStarted_ = ompl::time::now();
     if (reportTo_ == &progress_)
         progress_.startSolve();
     try
@@ -366,8 +371,11 @@ ob::PlannerStatus ompl_parc::ArcPlannerBase::solveStages(const ob::PlannerTermin
         reportTo_->reachStage(ArcProgress::Stage::SMOOTHING);
         smoothed_ = loop_->getPlan();
         smoothing_.apply(mrsi_, *smoothed_, ptc, mixSeed(loop_->getSeed(), 0x5300));
-        pdef_->addSolutionPath(smoothed_->toPathGeometric(mrsi_), false, 0., getName());
     }
+    if (objective_ != PlanObjective::FIRST)
+        improve(ptc);
+    if (smoothed_)
+        pdef_->addSolutionPath(smoothed_->toPathGeometric(mrsi_), false, 0., getName());
     else
         pdef_->addSolutionPath(loop_->buildSolutionPath(), false, 0., getName());
     if (reportTo_ == &progress_)
@@ -376,6 +384,32 @@ ob::PlannerStatus ompl_parc::ArcPlannerBase::solveStages(const ob::PlannerTermin
         progress_.reachStage(ArcProgress::Stage::SOLVED);
     }
     return ob::PlannerStatus(ob::PlannerStatus::EXACT_SOLUTION);
+}
+
+void ompl_parc::ArcPlannerBase::improve(const ob::PlannerTerminationCondition &ptc)
+{
+    firstSolutionTime_ = ompl::time::seconds(ompl::time::now() - solveStarted_);
+    if (!smoothed_)
+        smoothed_ = loop_->getPlan();
+    const auto report = [this](const MultiRobotPlan &plan)
+    {
+        if (const auto &callback = pdef_->getIntermediateSolutionCallback())
+        {
+            const auto path = plan.toPathGeometric(mrsi_);
+            const std::vector<const ob::State *> states(path->getStates().begin(), path->getStates().end());
+            callback(this, states, ob::Cost(static_cast<double>(objectiveKey(plan, objective_).first)));
+        }
+        if (reportTo_ == &progress_)
+            progress_.setMakespan(plan.getMakespan());
+    };
+    report(*smoothed_);
+    reportTo_->reachStage(ArcProgress::Stage::SMOOTHING);
+    const PlanImprover improver(mrsi_, objective_,
+                                [](bool shuffle) { return PrioritizedSTRRTSolver::makeReplanner(shuffle); });
+    improvement_ = improver.improve(*smoothed_, workspace_->getPool(), ptc, mixSeed(loop_->getSeed(), 0xa117), report);
+    OMPL_INFORM("%s: %zu anytime rounds, %zu better plans; the best has %s %zu", getName().c_str(),
+                improvement_->rounds, improvement_->improvements, getObjective().c_str(),
+                objectiveKey(*smoothed_, objective_).first);
 }
 
 void ompl_parc::ArcPlannerBase::getPlannerData(ob::PlannerData &data) const
@@ -405,4 +439,10 @@ void ompl_parc::ArcPlannerBase::getPlannerData(ob::PlannerData &data) const
     }
     if (loop_ && loop_->isInitialised())
         SmoothingStep::addProperties(*mrsi_, getPlan(), smoothing_.getReport(), data);
+    if (improvement_)
+    {
+        p["first_solution_time REAL"] = std::to_string(firstSolutionTime_);
+        p["anytime_rounds INTEGER"] = std::to_string(improvement_->rounds);
+        p["improvements INTEGER"] = std::to_string(improvement_->improvements);
+    }
 }

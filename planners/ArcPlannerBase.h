@@ -6,9 +6,12 @@
 #include "ompl_parc/arc/RepairWorkspace.h"
 #include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/model/MultiRobotProblem.h"
+#include "ompl_parc/quality/PlanImprover.h"
+#include "ompl_parc/quality/PlanObjective.h"
 #include "ompl_parc/quality/SmoothingStep.h"
 
 #include <ompl/base/Planner.h>
+#include <ompl/util/Time.h>
 
 #include <memory>
 #include <optional>
@@ -25,7 +28,15 @@ namespace ompl_parc
         runs the initial stage and conflict resolution until the plan is conflict-free (EXACT_SOLUTION, added
         to the ProblemDefinition as a composite path with one state per timestep) or the termination condition
         fires (TIMEOUT). A later solve() continues where the last one stopped; clear() starts over. The same
-        seed gives the same plan. */
+        seed gives the same plan.
+
+        With \e objective "makespan" or "sum_of_costs" (default "first": stop at the first solution, as the paper's
+        planners do) it is an anytime planner: after the first solution (smoothed with \e smooth) it keeps improving
+        the plan with a PlanImprover on its W workers (team replans in fresh priority orders, shortcuts, one-robot
+        replans) until the termination condition fires or the plan meets its lower bound, and reports the first
+        solution and each better one through the ProblemDefinition's intermediate-solution callback (cost = the
+        objective in timesteps). The solve then ends with EXACT_SOLUTION and the best plan; the properties
+        first_solution_time, anytime_rounds and improvements say what the anytime phase did. */
     class ArcPlannerBase : public ompl::base::Planner
     {
       public:
@@ -92,6 +103,11 @@ namespace ompl_parc
         double getSmoothing() const { return smoothing_.getBudget(); }
         /** \brief What the last solve()'s smoothing did, if it smoothed. */
         const std::optional<SmoothingReport> &getSmoothingReport() const { return smoothing_.getReport(); }
+        /** \brief "first", "makespan" or "sum_of_costs" (see the class description); throws for anything else. */
+        void setObjective(const std::string &objective) { objective_ = parsePlanObjective(objective); }
+        std::string getObjective() const { return toString(objective_); }
+        /** \brief What the last solve()'s anytime phase did, if it had one. */
+        const std::optional<ImprovementReport> &getImprovementReport() const { return improvement_; }
         /** \brief 0: draw a seed from OMPL's global random sequence at the first solve(). */
         void setSeed(unsigned int seed);
         unsigned int getSeed() const { return seed_; }
@@ -123,6 +139,8 @@ namespace ompl_parc
         /** \brief Build problem_ and loop_ from the ProblemDefinition; returns the status to report if it is bad. */
         std::optional<ompl::base::PlannerStatus> readProblem();
         ompl::base::PlannerStatus solveStages(const ompl::base::PlannerTerminationCondition &ptc);
+        /** \brief The anytime phase after the first solution (objective_ set): improve smoothed_ until \e ptc. */
+        void improve(const ompl::base::PlannerTerminationCondition &ptc);
 
         MultiRobotSpaceInformationPtr mrsi_;
         RepairLoopOptions options_;
@@ -133,6 +151,11 @@ namespace ompl_parc
         std::unique_ptr<RepairWorkspace> workspace_;
         std::unique_ptr<RepairLoop> loop_;
         SmoothingStep smoothing_;
+        PlanObjective objective_{PlanObjective::FIRST};
+        std::optional<ImprovementReport> improvement_;
+        /** \brief Seconds from the start of the last solve() to its first solution (anytime solves). */
+        double firstSolutionTime_{-1.};
+        ompl::time::point solveStarted_;
         /** \brief The smoothed copy of the loop's plan after a smoothed solve (the loop keeps its own). */
         std::optional<MultiRobotPlan> smoothed_;
         std::string statusMessage_;

@@ -1,6 +1,7 @@
 #include "ompl_parc/planners/ORPARC.h"
 
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
+#include "ompl_parc/quality/PlanObjective.h"
 #include "ompl_parc/quality/PlanQuality.h"
 #include "ompl_parc/util/InnerPlannerLog.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
@@ -40,9 +41,7 @@ void ompl_parc::ORPARC::setTotalWorkers(unsigned int total)
 
 void ompl_parc::ORPARC::setObjective(const std::string &objective)
 {
-    if (objective != "first" && objective != "makespan" && objective != "sum_of_costs")
-        throw ompl::Exception(getName(), "objective must be first, makespan or sum_of_costs (got '" + objective + "')");
-    objective_ = objective;
+    objective_ = toString(parsePlanObjective(objective));
 }
 
 void ompl_parc::ORPARC::setup()

@@ -2,6 +2,7 @@
 
 #include "ompl_parc/planners/ARC.h"
 #include "ompl_parc/planners/ORPARC.h"
+#include "ompl_parc/planners/PARC.h"
 #include "ompl_parc/planners/PrioritizedSTRRT.h"
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
 #include "ompl_parc/quality/PlanQuality.h"
@@ -249,6 +250,61 @@ TEST(PlanSmoother, AnytimeOrParcKeepsTheBestPlanAndReportsEachImprovement)
     const auto start = ompl::time::now();
     EXPECT_EQ(test::solveWith(again, blocked, 30.), ob::PlannerStatus::INVALID_START);
     EXPECT_LT(ompl::time::seconds(ompl::time::now() - start), 5.);
+}
+
+TEST(PlanSmoother, AnytimeArcAndParcImproveTheirPlanAndReportEachImprovement)
+{
+    // A dense crossing (not designed with the planners): the first plan is several times its bound, and the anytime
+    // phase (one worker for ARC, two for P-ARC) keeps finding better ones until the limit.
+    const MultiRobotProblem problem = scenarios::generateFamilyInstance("crossing", 12, 1);
+    const auto si = problem.getSpaceInformation();
+    for (const unsigned int workers : {1u, 2u})
+    {
+        SCOPED_TRACE(workers);
+        PARC planner(si);
+        planner.setSeed(3);
+        planner.params().setParam("workers", std::to_string(workers));
+        planner.params().setParam("objective", workers == 1 ? "makespan" : "sum_of_costs");
+        planner.setProblemDefinition(problem.createProblemDefinition());
+        std::vector<double> reported;
+        planner.getProblemDefinition()->setIntermediateSolutionCallback(
+            [&](const ob::Planner *from, const std::vector<const ob::State *> &states, const ob::Cost cost)
+            {
+                EXPECT_EQ(from, &planner);
+                EXPECT_GT(states.size(), 1u);
+                reported.push_back(cost.value());
+            });
+        planner.setup();
+#ifdef OMPL_PARC_SANITIZED
+        const double limit = 20.;
+#else
+        const double limit = 4.;
+#endif
+        const auto started = ompl::time::now();
+        ASSERT_EQ(planner.solve(ob::timedPlannerTerminationCondition(limit)), ob::PlannerStatus::EXACT_SOLUTION);
+        const double took = ompl::time::seconds(ompl::time::now() - started);
+        EXPECT_LT(took, limit + test::promptReturn());
+        ASSERT_TRUE(planner.getImprovementReport().has_value());
+        const auto &plan = planner.getPlan();
+        const std::size_t value = workers == 1 ? plan.getMakespan() : plan.getSumOfCosts();
+        // The first solution, then each better plan (lower by the objective, or as low and lower by the other
+        // measure); the last is the solution.
+        ASSERT_GE(reported.size(), 2u);
+        EXPECT_TRUE(std::is_sorted(reported.rbegin(), reported.rend()));
+        EXPECT_LT(reported.back(), reported.front());
+        EXPECT_EQ(static_cast<std::size_t>(reported.back()), value);
+        EXPECT_EQ(property(planner, "improvements INTEGER"), std::to_string(reported.size() - 1));
+        EXPECT_GE(std::stoul(property(planner, "anytime_rounds INTEGER")), 2u);
+        EXPECT_LT(std::stod(property(planner, "first_solution_time REAL")), took);
+        const auto check = SolutionValidator(problem).validate(plan);
+        EXPECT_TRUE(check.valid) << check.message;
+        const auto &path = *planner.getProblemDefinition()->getSolutionPath()->as<ompl::geometric::PathGeometric>();
+        EXPECT_TRUE(test::pathFollowsPlan(*si, path, plan));
+        EXPECT_EQ(planner.getProblemDefinition()->getSolutionCount(), 1u);
+    }
+    ARC arc(si);
+    EXPECT_THROW(arc.setObjective("fastest"), ompl::Exception);
+    EXPECT_EQ(arc.getObjective(), "first");
 }
 
 TEST(PlanSmoother, SmoothingNeverOutlastsTheSolvesTerminationCondition)

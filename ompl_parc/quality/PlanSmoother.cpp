@@ -55,8 +55,9 @@ ompl_parc::SmoothingReport ompl_parc::PlanSmoother::smooth(MultiRobotPlan &plan,
     if (replanner_ && teamReplanTime_ > 0.)
     {
         report.teamReplanned = true;
-        report.teamReplanKept = tryTeamReplan(
-            plan, ob::plannerOrTerminationCondition(ptc, ob::timedPlannerTerminationCondition(teamReplanTime_)));
+        const auto budget =
+            ob::plannerOrTerminationCondition(ptc, ob::timedPlannerTerminationCondition(teamReplanTime_));
+        report.teamReplanKept = tryTeamReplan(plan, budget, report.teamReplanDone);
     }
     for (std::size_t stalled = 0; stalled < getStallLimit() && !ptc();)
     {
@@ -239,7 +240,8 @@ bool ompl_parc::PlanSmoother::tryReplan(MultiRobotPlan &plan, std::size_t robot,
     return keepIfClear(plan, {robot}, std::move(changed), t1, nullptr);
 }
 
-bool ompl_parc::PlanSmoother::tryTeamReplan(MultiRobotPlan &plan, const ob::PlannerTerminationCondition &ptc)
+bool ompl_parc::PlanSmoother::tryTeamReplan(MultiRobotPlan &plan, const ob::PlannerTerminationCondition &ptc,
+                                            bool &done)
 {
     Subproblem whole;
     whole.global = true;
@@ -254,7 +256,9 @@ bool ompl_parc::PlanSmoother::tryTeamReplan(MultiRobotPlan &plan, const ob::Plan
     whole.windowEnd = plan.getMakespan();
     Patch patch;
     const auto seed = static_cast<std::uint_fast32_t>(rng_.uniformInt(1, std::numeric_limits<int>::max()));
-    if (!replanner_->solve(*si_, whole, ptc, seed, patch))
+    const bool solved = replanner_->resume(*si_, whole, ptc, seed, patch, teamReplanMemory_);
+    done = solved || !ptc();
+    if (!solved)
         return false;
     MultiRobotPlan candidate(*si_);
     for (std::size_t i = 0; i < plan.getRobotCount(); ++i)

@@ -5,6 +5,7 @@
 #include "ompl_parc/arc/SubproblemSolver.h"
 #include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/model/MultiRobotSpaceInformation.h"
+#include "ompl_parc/quality/PlanObjective.h"
 
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/util/RandomNumbers.h>
@@ -28,6 +29,9 @@ namespace ompl_parc
         std::size_t replans{0}, replansKept{0};
         /** \brief Whether the whole team was replanned (PlanSmoother::setTeamReplanTime()), and whether it was kept. */
         bool teamReplanned{false}, teamReplanKept{false};
+        /** \brief Whether the team replan ended (solved, or failed in every order it tries) rather than being cut by
+            its time: with a memory (PlanSmoother::setTeamReplanMemory()) a cut one goes on at the next smooth(). */
+        bool teamReplanDone{false};
         /** \brief Changes kept, of every kind. */
         std::size_t kept() const
         {
@@ -76,11 +80,21 @@ namespace ompl_parc
 
         /** \brief First spend up to \e seconds replanning the whole team with the replanner, robot after robot
             among those planned before (prioritised planning from the plan's starts to its goals), and keep that
-            plan if it has a shorter makespan (or the same and a smaller sum of costs) and is conflict-free. A
+            plan if it is better by the objective (setObjective()) and conflict-free. A
             repair's detours and waits are not local: where a robot waited for a long chain of repairs, shortcuts
             and one-robot replans among the others' long paths cannot undo them, a fresh order can. 0 (the
             default): no team replan. */
         void setTeamReplanTime(double seconds) { teamReplanTime_ = seconds; }
+
+        /** \brief Let the team replan go on from where the last smooth() with \e memory (the replanner's
+            SubproblemSolver::makeMemory(), kept to one thread and one team) left it when its time ran out: repeated
+            short smoothings (PlanImprover's rounds) add up to one long team replan. Null (the default): each
+            smooth() starts it afresh. */
+        void setTeamReplanMemory(SubproblemSolver::Memory *memory) { teamReplanMemory_ = memory; }
+
+        /** \brief Which plan a team replan must beat (objectiveKey()): by makespan (the default, also for FIRST), or by
+            sum of costs. Shortcuts and one-robot replans make no robot arrive later, so they serve both. */
+        void setObjective(PlanObjective objective) { objective_ = objective; }
 
         /** \brief Attempts in a row without gain before a replan (with a replanner). */
         static constexpr std::size_t REPLAN_PERIOD = 16;
@@ -104,8 +118,9 @@ namespace ompl_parc
         bool tryReplan(MultiRobotPlan &plan, std::size_t robot, std::size_t t1,
                        const ompl::base::PlannerTerminationCondition &ptc);
 
-        /** \brief Replan the whole team (setTeamReplanTime()) under \e ptc; keep it if better and conflict-free. */
-        bool tryTeamReplan(MultiRobotPlan &plan, const ompl::base::PlannerTerminationCondition &ptc);
+        /** \brief Replan the whole team (setTeamReplanTime()) under \e ptc; keep it if better and conflict-free.
+            \e done: whether the replan ended otherwise than by \e ptc (SmoothingReport::teamReplanDone). */
+        bool tryTeamReplan(MultiRobotPlan &plan, const ompl::base::PlannerTerminationCondition &ptc, bool &done);
 
         /** \brief Keep \e changed (new paths of the robots of \e team, the plan unchanged before \e t1) if it is
             conflict-free, else put the old paths back; on a conflict, \e blocker (if given) receives the first
@@ -128,6 +143,8 @@ namespace ompl_parc
         MultiRobotSpaceInformationPtr si_;
         SubproblemSolverPtr replanner_;
         double teamReplanTime_{0.};
+        PlanObjective objective_{PlanObjective::MAKESPAN};
+        SubproblemSolver::Memory *teamReplanMemory_{nullptr};
         /** \brief The scans of the plan being smoothed (one per smooth(): its frontiers are that plan's). */
         std::optional<ConflictDetector> detector_;
         ompl::RNG rng_;

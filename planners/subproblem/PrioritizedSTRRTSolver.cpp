@@ -91,9 +91,11 @@ ompl_parc::PrioritizedSTRRTSolver::PrioritizedSTRRTSolver(PrioritizedSTRRTSettin
     configure(probe, settings_);
 }
 
-std::shared_ptr<ompl_parc::PrioritizedSTRRTSolver> ompl_parc::PrioritizedSTRRTSolver::makeReplanner()
+std::shared_ptr<ompl_parc::PrioritizedSTRRTSolver> ompl_parc::PrioritizedSTRRTSolver::makeReplanner(bool shuffle)
 {
-    return std::make_shared<PrioritizedSTRRTSolver>(PrioritizedSTRRTSettings());
+    PrioritizedSTRRTSettings settings;
+    settings.shuffle = shuffle;
+    return std::make_shared<PrioritizedSTRRTSolver>(settings);
 }
 
 std::vector<std::size_t> ompl_parc::PrioritizedSTRRTSolver::priorityOrder(std::size_t size,

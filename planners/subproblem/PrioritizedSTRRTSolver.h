@@ -65,10 +65,11 @@ namespace ompl_parc
         explicit PrioritizedSTRRTSolver(PrioritizedSTRRTSettings settings = PrioritizedSTRRTSettings());
 
         /** \brief The solver PlanSmoother replans with (one robot's tail, or the whole team): PP-ST-RRT's defaults,
-            the lattice for translating robots (discs) first. Its axis-aligned paths are seldom shorter than a
-            straight piece, but among the waits and detours a repair leaves they often arrive much earlier, and
-            the shortcuts that follow straighten them. */
-        static std::shared_ptr<PrioritizedSTRRTSolver> makeReplanner();
+            the lattice for translating robots (discs) first; with \e shuffle the priority order is shuffled with
+            each call's seed (PlanImprover's workers and rounds try different orders). Its axis-aligned paths are seldom
+           shorter than a straight piece, but among the waits and detours a repair leaves they often arrive much
+           earlier, and the shortcuts that follow straighten them. */
+        static std::shared_ptr<PrioritizedSTRRTSolver> makeReplanner(bool shuffle = false);
 
         std::string getName() const override { return "pp-st-rrt"; }
         bool usesContext() const override { return settings_.avoidOthers; }
