@@ -102,15 +102,22 @@ namespace
                   << "conflicts  " << s->conflicts << " resolved, " << s->solverCalls << " solver calls, "
                   << s->expansions << " window expansions, " << s->teamGrowths << " robot-set growths, "
                   << s->globalRepairs << " global repairs, longest solver call " << s->longestSolverCall << " s\n";
+        // Where the plan's length comes from: the initial plan, then what each solver's repairs added.
+        std::cout << "length     initial plan makespan " << s->initialMakespan << ", sum of costs "
+                  << s->initialSumOfCosts << "; repairs added";
+        for (const auto &[solver, wins] : s->solverWins)
+            std::cout << ", " << solver << " (" << wins << "): " << s->solverDelays.at(solver) << " to arrivals, "
+                      << s->solverMakespanAdded.at(solver) << " to the makespan";
+        std::cout << (s->solverWins.empty() ? " nothing" : "") << "; global repairs " << s->globalDelay
+                  << " of those delays\n";
         if (parallel != nullptr)
             std::cout << "parallel   " << parallel->batches << " batches, " << parallel->repairAttempts
                       << " repair attempts (" << parallel->cancelledAttempts << " cancelled)\n";
         if (const auto *arc = dynamic_cast<const ArcPlannerBase *>(&planner); arc && arc->getImprovementReport())
             std::cout << "anytime    first solution after " << propertyOf(planner, "first_solution_time REAL")
                       << " s, then " << arc->getImprovementReport()->seconds << " s in "
-                      << arc->getImprovementReport()->rounds << " rounds, "
-                      << arc->getImprovementReport()->improvements << " better plans by " << arc->getObjective()
-                      << "\n";
+                      << arc->getImprovementReport()->rounds << " rounds, " << arc->getImprovementReport()->improvements
+                      << " better plans by " << arc->getObjective() << "\n";
     }
 
     /** \brief The smoothing line: what the planner's own smoothing did (from its properties), or, for a planner

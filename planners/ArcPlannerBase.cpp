@@ -433,10 +433,15 @@ void ompl_parc::ArcPlannerBase::getPlannerData(ob::PlannerData &data) const
     // Property names become SQL column names in ompl_benchmark_statistics: no '-' (solver names have them).
     for (const auto &[solver, wins] : s.solverWins)
     {
-        std::string column = "wins_" + solver;
+        std::string column = solver;
         std::replace(column.begin(), column.end(), '-', '_');
-        p[column + " INTEGER"] = std::to_string(wins);
+        p["wins_" + column + " INTEGER"] = std::to_string(wins);
+        p["delay_" + column + " INTEGER"] = std::to_string(s.solverDelays.at(solver));
+        p["makespan_added_" + column + " INTEGER"] = std::to_string(s.solverMakespanAdded.at(solver));
     }
+    p["global_delay INTEGER"] = std::to_string(s.globalDelay);
+    p["initial_makespan INTEGER"] = std::to_string(s.initialMakespan);
+    p["initial_sum_of_costs INTEGER"] = std::to_string(s.initialSumOfCosts);
     if (loop_ && loop_->isInitialised())
         SmoothingStep::addProperties(*mrsi_, getPlan(), smoothing_.getReport(), data);
     if (improvement_)

@@ -1,6 +1,7 @@
 #ifndef OMPL_PARC_ARC_ARC_STATISTICS_
 #define OMPL_PARC_ARC_ARC_STATISTICS_
 
+#include <cstddef>
 #include <map>
 #include <string>
 
@@ -18,6 +19,14 @@ namespace ompl_parc
         /** \brief The longest single subproblem solver call, in seconds of wall time. */
         double longestSolverCall{0.};
         std::map<std::string, unsigned int> solverWins;
+        /** \brief Where a plan's length comes from. Per solver that repaired (the keys of solverWins), the timesteps
+            its repairs added to the repaired robots' arrivals (summed over those robots; a repair can also shorten)
+            and to the plan's makespan; globalDelay is the part of the delays added by global repairs. The plan's
+            makespan is initialMakespan plus the makespan added, its sum of costs initialSumOfCosts plus the delays. */
+        std::map<std::string, long long> solverDelays, solverMakespanAdded;
+        long long globalDelay{0};
+        /** \brief The initial stage's plan (every robot planned alone). */
+        std::size_t initialMakespan{0}, initialSumOfCosts{0};
     };
 
     /** \brief Counters of P-ARC's parallel stages, and its projected W-core times.

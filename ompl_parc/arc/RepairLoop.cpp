@@ -120,8 +120,13 @@ bool ompl_parc::RepairLoop::planInitial(const ob::PlannerTerminationCondition &p
             planned_[robots[k]] = 1;
         }
     const bool initialised = isInitialised();
-    if (progress != nullptr && initialised)  // a robot without a path has no arrival yet
-        progress->setMakespan(plan_.getMakespan());
+    if (initialised)  // a robot without a path has no arrival yet
+    {
+        statistics_.initialMakespan = plan_.getMakespan();
+        statistics_.initialSumOfCosts = plan_.getSumOfCosts();
+        if (progress != nullptr)
+            progress->setMakespan(plan_.getMakespan());
+    }
     return initialised;
 }
 
@@ -267,7 +272,16 @@ std::size_t ompl_parc::RepairLoop::nextBatchCapacity(std::size_t base, std::size
 void ompl_parc::RepairLoop::applyRepair(const Repair &repair)
 {
     const Subproblem &sub = repair.subproblem;
+    const auto makespan = static_cast<long long>(plan_.getMakespan());
+    long long delay = 0;
+    for (std::size_t robot : sub.robots)
+        delay -= static_cast<long long>(plan_.getArrival(robot));
     repair.patch.spliceInto(plan_, sub);
+    for (std::size_t robot : sub.robots)
+        delay += static_cast<long long>(plan_.getArrival(robot));
+    statistics_.solverDelays[repair.solver] += delay;
+    statistics_.solverMakespanAdded[repair.solver] += static_cast<long long>(plan_.getMakespan()) - makespan;
+    statistics_.globalDelay += sub.global ? delay : 0;
     for (std::size_t robot : sub.robots)
         workspace_.getBatchDetector().invalidate(robot, sub.windowStart);
     const std::size_t duration = repair.patch.getDuration();

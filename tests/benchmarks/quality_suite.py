@@ -43,7 +43,40 @@ def run(demo, family, robots, instance, planner, seed, limit, extra):
         row["first_solution"] = row["seconds"] - row["smoothing"]
         row["makespan_ratio"] = float(re.search(r"makespan\s+\d+ timesteps.*?([0-9.]+)x the lower bound", out).group(1))
         row["soc_ratio"] = float(re.search(r"sum costs\s+\d+ timesteps, ([0-9.]+)x the lower bound", out).group(1))
+        row["breakdown"] = breakdown(out)
     return row
+
+
+def breakdown(out):
+    """Where the makespan comes from (ARC-family planners): the straight-line bound, what the initial plan adds to it,
+    what each repair solver's repairs add, what smoothing and the anytime phase take away; in timesteps, summing to
+    the final makespan."""
+    length = re.search(r"length\s+initial plan makespan (\d+), sum of costs \d+; repairs added(.*?); global", out)
+    if not length:
+        return None
+    bound = int(re.search(r"makespan\s+\d+ timesteps.*?x the lower bound (\d+)", out).group(1))
+    final = int(re.search(r"makespan\s+(\d+) timesteps", out).group(1))
+    parts = {"initial plan": int(length.group(1)) - bound}
+    for solver, added in re.findall(r", ([a-z-]+) \(\d+\): -?\d+ to arrivals, (-?\d+) to the makespan", length.group(2)):
+        parts["repairs " + solver] = int(added)
+    parts["smoothing, anytime"] = final - bound - sum(parts.values())
+    return {"bound": bound, "parts": parts}
+
+
+def printBreakdown(rows, families, planners):
+    """Per family and ARC-family planner: each part's share of the makespan, as a multiple of the bound (summed over
+    the instances, so that the parts add up to the family's total makespan / total bound)."""
+    print("\nwhere the makespan comes from (sum over the family's instances, as multiples of the summed bound):")
+    for family in families:
+        for planner in planners:
+            got = [r["breakdown"] for r in rows if r["family"] == family and r["planner"] == planner and
+                   r["solved"] and r.get("breakdown")]
+            if not got:
+                continue
+            bound = sum(b["bound"] for b in got)
+            names = sorted({name for b in got for name in b["parts"]})
+            parts = ", ".join(f"{name} {sum(b['parts'].get(name, 0) for b in got) / bound:+.2f}" for name in names)
+            print(f"{family:12} {planner:11} bound 1.00, {parts}")
 
 
 def percentile(values, q):
@@ -80,7 +113,8 @@ def main():
     if options.csv:
         with open(options.csv, "w", newline="") as f:
             writer = csv.DictWriter(f, fieldnames=["family", "robots", "instance", "planner", "solved", "seconds",
-                                                   "smoothing", "first_solution", "makespan_ratio", "soc_ratio"])
+                                                   "smoothing", "first_solution", "makespan_ratio", "soc_ratio"],
+                                    extrasaction="ignore")
             writer.writeheader()
             writer.writerows(rows)
     by = {(r["family"], r["robots"], r["instance"], r["planner"]): r for r in rows}
@@ -92,7 +126,7 @@ def main():
             good = [r for r in mine if r["solved"]]
             versus = [r["makespan_ratio"] / by[(r["family"], r["robots"], r["instance"], options.reference)]
                       ["makespan_ratio"] for r in good
-                      if by[(r["family"], r["robots"], r["instance"], options.reference)]["solved"]]
+                      if by.get((r["family"], r["robots"], r["instance"], options.reference), {}).get("solved")]
             if not good:
                 print(f"{family:12} {planner:11} {0:>3}/{len(mine):<3}")
                 continue
@@ -102,6 +136,7 @@ def main():
                   f"{statistics.median(r['soc_ratio'] for r in good):>5.2f}x "
                   f"{(statistics.median(versus) if versus else float('nan')):>15.2f}x "
                   f"{statistics.median(r['first_solution'] for r in good):>10.3f}s")
+    printBreakdown(rows, options.families.split(","), planners)
     for planner in planners:
         good = [r["makespan_ratio"] for r in rows if r["planner"] == planner and r["solved"]]
         if good:
