@@ -61,6 +61,8 @@ namespace
         double time;
         /** \brief Makespan over its straight-line bound (PlanQuality), for a valid solution. */
         double makespanRatio;
+        /** \brief Makespan over its obstacle-aware bound (PlanQuality), for a valid solution. */
+        double makespanPathRatio;
     };
 
     /** \brief Per planner name, each run's outcome. */
@@ -110,31 +112,34 @@ namespace
     }
 
     /** \brief Success rate, median time (failures counted at the time limit) and median makespan over its lower
-        bound (solved runs) per planner, as a Markdown table: the robustness and quality view of an experiment
-        over many instances. */
+        bounds, straight-line and obstacle-aware (solved runs), per planner, as a Markdown table: the robustness and
+        quality view of an experiment over many instances. */
     void printSummary(const BenchmarkConfig &config, const Tally &tally, std::ostream &out)
     {
         out << "| planner | solved | median time (s, failures at " << config.getTimeLimit()
-            << " s) | median makespan / lower bound (solved) |\n"
-            << "|---|---|---|---|\n";
+            << " s) | median makespan / lower bound (solved) | median makespan / path bound (solved) |\n"
+            << "|---|---|---|---|---|\n";
         for (const auto &entry : config.getPlanners())
         {
             const auto it = tally.find(entry.name);
             if (it == tally.end())
                 continue;
-            std::vector<double> times, ratios;
+            std::vector<double> times, ratios, pathRatios;
             for (const RunOutcome &run : it->second)
             {
                 times.push_back(run.success ? run.time : config.getTimeLimit());
                 if (run.success)
+                {
                     ratios.push_back(run.makespanRatio);
+                    pathRatios.push_back(run.makespanPathRatio);
+                }
             }
             out << "| " << entry.name << " | " << ratios.size() << "/" << times.size() << " | " << std::fixed
                 << std::setprecision(3) << median(times) << " | ";
             if (ratios.empty())
-                out << "- |\n";
+                out << "- | - |\n";
             else
-                out << std::setprecision(2) << median(ratios) << " |\n";
+                out << std::setprecision(2) << median(ratios) << " | " << median(pathRatios) << " |\n";
         }
     }
 
@@ -261,7 +266,8 @@ namespace
         const auto &properties = record.properties;
         const bool success = properties.at("success BOOLEAN") == "1";
         tally[planner->getName()].push_back({success, std::stod(properties.at("time REAL")),
-                                             success ? std::stod(properties.at("makespan_ratio REAL")) : 0.});
+                                             success ? std::stod(properties.at("makespan_ratio REAL")) : 0.,
+                                             success ? std::stod(properties.at("makespan_path_ratio REAL")) : 0.});
         csv.write({instance.scenario, instance.problem.getSpaceInformation()->getRobotCount(), instance.task,
                    static_cast<unsigned int>(std::stoul(properties.at("seed INTEGER"))), workerBudget(*planner),
                    planner->getName(), config.getPlanners().at(record.planner).type, config.getTimeLimit(), success,

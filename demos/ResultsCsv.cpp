@@ -19,6 +19,8 @@ namespace
         static const std::vector<std::pair<std::string, std::string>> columns = {
             {"makespan_ratio", "makespan_ratio REAL"},
             {"sum_of_costs_ratio", "sum_of_costs_ratio REAL"},
+            {"makespan_path_ratio", "makespan_path_ratio REAL"},
+            {"sum_of_costs_path_ratio", "sum_of_costs_path_ratio REAL"},
             {"smoothing_time", "smoothing_time REAL"},
             {"makespan_unsmoothed", "makespan_unsmoothed INTEGER"},
             {"initial_time", "initial_wall_time REAL"},

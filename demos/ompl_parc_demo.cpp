@@ -300,6 +300,10 @@ int main(int argc, char **argv)
                       << "sum costs  " << plan.getSumOfCosts() << " timesteps, " << quality.sumOfCostsRatio()
                       << "x the lower bound " << quality.sumOfCostsBound << std::setprecision(3)
                       << " (bounds: each robot alone on a straight line)\n"
+                      << "path bound makespan " << std::setprecision(2) << quality.makespanPathRatio() << "x of "
+                      << quality.makespanPathBound << ", sum of costs " << quality.sumOfCostsPathRatio() << "x of "
+                      << quality.sumOfCostsPathBound << std::setprecision(3)
+                      << " (each robot alone on its shortest path around the obstacles)\n"
                       << "waypoints  " << plan.getPieceCount() << " pieces over the team\n"
                       << "validated  "
                       << (!validate      ? std::string("skipped (--no-validate)")
