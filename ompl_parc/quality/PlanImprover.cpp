@@ -21,8 +21,9 @@ ompl_parc::PlanImprover::PlanImprover(MultiRobotSpaceInformationPtr si, PlanObje
 bool ompl_parc::PlanImprover::meetsBound(const MultiRobotPlan &plan) const
 {
     const PlanQuality quality = PlanQuality::measure(*si_, plan);
-    return objective_ == PlanObjective::SUM_OF_COSTS ? quality.sumOfCosts <= quality.sumOfCostsBound
-                                                     : quality.makespan <= quality.makespanBound;
+    // The obstacle-aware bounds are the tighter ones (never below the straight-line ones).
+    return objective_ == PlanObjective::SUM_OF_COSTS ? quality.sumOfCosts <= quality.sumOfCostsPathBound
+                                                     : quality.makespan <= quality.makespanPathBound;
 }
 
 ompl_parc::ImprovementReport ompl_parc::PlanImprover::improve(MultiRobotPlan &plan, WorkerPool &pool,

@@ -58,7 +58,8 @@ namespace ompl_parc
         static constexpr unsigned int MAX_ROUND_DOUBLINGS = 6;
 
       private:
-        /** \brief True if \e plan meets its lower bound for the objective: nothing is left to gain. */
+        /** \brief True if \e plan meets its obstacle-aware lower bound for the objective (PlanQuality): nothing is left
+            to gain. */
         bool meetsBound(const MultiRobotPlan &plan) const;
 
         MultiRobotSpaceInformationPtr si_;
