@@ -1,6 +1,8 @@
 #include "TestProblems.h"
 
 #include "ompl_parc/planners/ARC.h"
+#include "ompl_parc/planners/PARC.h"
+#include "ompl_parc/scenarios/ProblemFamilies.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 #include "ompl_parc/validation/SolutionValidator.h"
 
@@ -186,5 +188,38 @@ TEST(Arc, ProfileAndExplicitParametersInAnyOrder)
         EXPECT_EQ(arc->getWindow(), 20u);  // the panda profile's, not set explicitly
         EXPECT_EQ(arc->getGrowth(), "exponential");
         EXPECT_DOUBLE_EQ(arc->getMinBoundRange(), 0.5);
+    }
+}
+
+TEST(Arc, LengthBreakdownAddsUpToThePlan)
+{
+    // Where the length comes from: the initial plan plus what each solver's repairs added is the plan, for ARC and for
+    // P-ARC's batches (every splice counted once), on a dense generated crossing with several solvers winning.
+    const MultiRobotProblem problem = scenarios::generateFamilyInstance("crossing", 12, 1);
+    for (const unsigned int workers : {1u, 2u})
+    {
+        SCOPED_TRACE(workers);
+        PARC planner(problem.getSpaceInformation());
+        planner.setSeed(2);
+        planner.params().setParam("workers", std::to_string(workers));
+        ASSERT_EQ(test::solveWith(planner, problem, 60.), ompl::base::PlannerStatus::EXACT_SOLUTION);
+        const auto &s = planner.getStatistics();
+        const MultiRobotPlan &plan = planner.getPlan();
+        ASSERT_GT(s.repairs, 0u);
+        long long makespan = static_cast<long long>(s.initialMakespan);
+        long long sum = static_cast<long long>(s.initialSumOfCosts);
+        unsigned int wins = 0;
+        for (const auto &[solver, count] : s.solverWins)
+        {
+            makespan += s.solverMakespanAdded.at(solver);
+            sum += s.solverDelays.at(solver);
+            wins += count;
+        }
+        EXPECT_EQ(wins, s.repairs);
+        EXPECT_EQ(makespan, static_cast<long long>(plan.getMakespan()));
+        EXPECT_EQ(sum, static_cast<long long>(plan.getSumOfCosts()));
+        EXPECT_GT(plan.getMakespan(), s.initialMakespan);  // the repairs of this crossing do cost time
+        const auto check = SolutionValidator(problem).validate(plan);
+        EXPECT_TRUE(check.valid) << check.message;
     }
 }
