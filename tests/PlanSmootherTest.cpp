@@ -33,6 +33,30 @@ namespace
         return found == data.properties.end() ? "" : found->second;
     }
 
+    /** Record into \e reported the cost of every solution \e planner reports through its ProblemDefinition's
+        intermediate-solution callback (checking that the report is its own and carries a path). */
+    void recordReports(ob::Planner &planner, std::vector<double> &reported)
+    {
+        planner.getProblemDefinition()->setIntermediateSolutionCallback(
+            [&planner, &reported](const ob::Planner *from, const std::vector<const ob::State *> &states,
+                                  const ob::Cost cost)
+            {
+                EXPECT_EQ(from, &planner);
+                EXPECT_GT(states.size(), 1u);
+                reported.push_back(cost.value());
+            });
+    }
+
+    /** The time limit of an anytime solve: long enough for several rounds, also under ThreadSanitizer. */
+    constexpr double anytimeLimit()
+    {
+#ifdef OMPL_PARC_SANITIZED
+        return 20.;
+#else
+        return 4.;
+#endif
+    }
+
     /** Every robot starts and ends where it did in \e before. */
     void expectSameEndpoints(const MultiRobotPlan &before, const MultiRobotPlan &after)
     {
@@ -210,20 +234,10 @@ TEST(PlanSmoother, AnytimeOrParcKeepsTheBestPlanAndReportsEachImprovement)
     orparc.params().setParam("smooth", "0.2");
     orparc.setProblemDefinition(problem.createProblemDefinition());
     std::vector<double> reported;
-    orparc.getProblemDefinition()->setIntermediateSolutionCallback(
-        [&](const ob::Planner *planner, const std::vector<const ob::State *> &states, const ob::Cost cost)
-        {
-            EXPECT_EQ(planner, &orparc);
-            EXPECT_GT(states.size(), 1u);
-            reported.push_back(cost.value());
-        });
+    recordReports(orparc, reported);
     orparc.setup();
     // Races until the limit: long enough for several races (one takes ~0.2 s, seconds under ThreadSanitizer).
-#ifdef OMPL_PARC_SANITIZED
-    const double limit = 20.;
-#else
-    const double limit = 4.;
-#endif
+    const double limit = anytimeLimit();
     const auto started = ompl::time::now();
     ASSERT_EQ(orparc.solve(ob::timedPlannerTerminationCondition(limit)), ob::PlannerStatus::EXACT_SOLUTION);
     const double took = ompl::time::seconds(ompl::time::now() - started);
@@ -267,19 +281,9 @@ TEST(PlanSmoother, AnytimeArcAndParcImproveTheirPlanAndReportEachImprovement)
         planner.params().setParam("objective", workers == 1 ? "makespan" : "sum_of_costs");
         planner.setProblemDefinition(problem.createProblemDefinition());
         std::vector<double> reported;
-        planner.getProblemDefinition()->setIntermediateSolutionCallback(
-            [&](const ob::Planner *from, const std::vector<const ob::State *> &states, const ob::Cost cost)
-            {
-                EXPECT_EQ(from, &planner);
-                EXPECT_GT(states.size(), 1u);
-                reported.push_back(cost.value());
-            });
+        recordReports(planner, reported);
         planner.setup();
-#ifdef OMPL_PARC_SANITIZED
-        const double limit = 20.;
-#else
-        const double limit = 4.;
-#endif
+        const double limit = anytimeLimit();
         const auto started = ompl::time::now();
         ASSERT_EQ(planner.solve(ob::timedPlannerTerminationCondition(limit)), ob::PlannerStatus::EXACT_SOLUTION);
         const double took = ompl::time::seconds(ompl::time::now() - started);
