@@ -18,12 +18,11 @@ ompl_parc::PlanImprover::PlanImprover(MultiRobotSpaceInformationPtr si, PlanObje
 {
 }
 
-bool ompl_parc::PlanImprover::meetsBound(const MultiRobotPlan &plan) const
+std::size_t ompl_parc::PlanImprover::boundOf(const MultiRobotPlan &plan) const
 {
     const PlanQuality quality = PlanQuality::measure(*si_, plan);
     // The obstacle-aware bounds are the tighter ones (never below the straight-line ones).
-    return objective_ == PlanObjective::SUM_OF_COSTS ? quality.sumOfCosts <= quality.sumOfCostsPathBound
-                                                     : quality.makespan <= quality.makespanPathBound;
+    return objective_ == PlanObjective::SUM_OF_COSTS ? quality.sumOfCostsPathBound : quality.makespanPathBound;
 }
 
 ompl_parc::ImprovementReport ompl_parc::PlanImprover::improve(MultiRobotPlan &plan, WorkerPool &pool,
@@ -44,7 +43,9 @@ ompl_parc::ImprovementReport ompl_parc::PlanImprover::improve(MultiRobotPlan &pl
         solvers[w] = replanner_(shuffled[w] != 0);
         memories[w] = solvers[w]->makeMemory();
     }
-    for (unsigned int round = 0; !ptc() && !meetsBound(plan); ++round)
+    // Every plan has the same starts and goals, so the same bound: measured once.
+    const std::size_t bound = boundOf(plan);
+    for (unsigned int round = 0; !ptc() && objectiveKey(plan, objective_).first > bound; ++round)
     {
         ++report.rounds;
         const double seconds = ROUND_SECONDS * static_cast<double>(1u << std::min(round, MAX_ROUND_DOUBLINGS));

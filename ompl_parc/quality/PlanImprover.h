@@ -58,9 +58,9 @@ namespace ompl_parc
         static constexpr unsigned int MAX_ROUND_DOUBLINGS = 6;
 
       private:
-        /** \brief True if \e plan meets its obstacle-aware lower bound for the objective (PlanQuality): nothing is left
-            to gain. */
-        bool meetsBound(const MultiRobotPlan &plan) const;
+        /** \brief \e plan's obstacle-aware lower bound for the objective (PlanQuality): a plan that meets it has
+            nothing left to gain. */
+        std::size_t boundOf(const MultiRobotPlan &plan) const;
 
         MultiRobotSpaceInformationPtr si_;
         PlanObjective objective_;
