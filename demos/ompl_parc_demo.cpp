@@ -48,6 +48,17 @@ namespace
     }
 
     /** \brief Which OR-P-ARC instance the statistics lines describe, and how every instance ended. */
+    /** For the ARC family, ", profile P" and whether the robots chose it (the profile sets the repair windows). */
+    std::string profileNote(const ompl::base::Planner &planner, const MultiRobotSpaceInformation &si)
+    {
+        if (!planner.params().hasParam("profile"))
+            return "";
+        const std::string set = planner.params().getParam("profile")->getValue();
+        if (set != "auto")
+            return ", profile " + set;
+        return ", profile " + ArcSettings::profileFor(si) + " (from the robots; --param profile=... to choose)";
+    }
+
     void printRace(const ORPARC &orparc)
     {
         const int reported = orparc.getReportedInstance();
@@ -239,7 +250,7 @@ int main(int argc, char **argv)
             planner->setup();
 
             std::cout << "scenario   " << problem.getName() << ", " << si->getRobotCount() << " robots\n"
-                      << "planner    " << planner->getName() << "\n";
+                      << "planner    " << planner->getName() << profileNote(*planner, *si) << "\n";
             std::optional<tools::ProgressLine> progress;
             if (vm.count("quiet") == 0)
                 progress.emplace("planning...", PlannerRegistry::progressOf(*planner), si->getRobotCount());

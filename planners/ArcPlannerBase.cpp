@@ -59,7 +59,8 @@ ompl_parc::ArcPlannerBase::ArcPlannerBase(const ob::SpaceInformationPtr &si, con
     specs_.optimizingPaths = false;
     specs_.multithreaded = false;
     declareParam<std::string>("profile", this, &ArcPlannerBase::setProfile, &ArcPlannerBase::getProfile,
-                              "mobile,planar,panda");
+                              "auto,mobile,planar,panda");
+    setProfile("auto");
     smoothing_.declareParameter(*this);
     smoothing_.setReplanner([] { return PrioritizedSTRRTSolver::makeReplanner(); });
     smoothing_.setTeamReplanShare(0.5);
@@ -99,7 +100,7 @@ ompl_parc::ArcPlannerBase::~ArcPlannerBase() = default;
 
 void ompl_parc::ArcPlannerBase::setProfile(const std::string &profile)
 {
-    options_.settings.applyProfile(profile);
+    options_.settings.applyProfile(profile == "auto" ? ArcSettings::profileFor(*mrsi_) : profile);
     profile_ = profile;
 }
 

@@ -67,6 +67,8 @@ namespace ompl_parc
 
         /** \name Declared parameters
             @{ */
+        /** \brief ArcSettings::profile() \e profile's values for every setting not set on its own; "auto" (the
+            default): the profile of the team's robots (ArcSettings::profileFor()). */
         void setProfile(const std::string &profile);
         std::string getProfile() const { return profile_; }
         void setWindow(unsigned int window);
@@ -144,7 +146,7 @@ namespace ompl_parc
 
         MultiRobotSpaceInformationPtr mrsi_;
         RepairLoopOptions options_;
-        std::string profile_{"mobile"};
+        std::string profile_{"auto"};
         unsigned int seed_{0};
         std::unique_ptr<MultiRobotProblem> problem_;
         /** \brief Made by setup(), used by every loop_ (declared before it: it outlives the loop). */

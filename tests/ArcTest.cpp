@@ -1,7 +1,9 @@
 #include "TestProblems.h"
 
 #include "ompl_parc/planners/ARC.h"
+#include "ompl_parc/planners/ORPARC.h"
 #include "ompl_parc/planners/PARC.h"
+#include "ompl_parc/scenarios/PandaCage.h"
 #include "ompl_parc/scenarios/ProblemFamilies.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 #include "ompl_parc/validation/SolutionValidator.h"
@@ -163,6 +165,30 @@ TEST(Arc, ParametersAreDeclaredAndStatisticsReported)
     EXPECT_THROW(arc.setProfile("humanoid"), ompl::Exception);
     EXPECT_THROW(arc.setWindow(0), ompl::Exception);
     EXPECT_THROW(arc.setMinWindowGrowth(std::nan("")), ompl::Exception);
+}
+
+TEST(Arc, ProfileFollowsTheRobotsUnlessOneIsNamed)
+{
+    // No profile named: the team's robots choose it (discs: mobile, planar arms: planar, URDF arms: panda), so a
+    // Panda team is not repaired with 2D windows; a named profile (also for ORPARC's racers) overrides it.
+    const std::vector<std::pair<MultiRobotProblem, unsigned int>> teams = {{scenarios::createMobileCross(4), 200u},
+                                                                           {scenarios::createPlanarCross(4), 100u},
+                                                                           {scenarios::createPandaCage(4), 20u}};
+    for (const auto &[problem, window] : teams)
+    {
+        ARC arc(problem.getSpaceInformation());
+        EXPECT_EQ(arc.getProfile(), "auto");
+        EXPECT_EQ(arc.getWindow(), window) << problem.getName();
+        EXPECT_EQ(arc.getSequential(), window == 20u) << problem.getName();
+    }
+    ARC named(scenarios::createPandaCage(4).getSpaceInformation());
+    ASSERT_TRUE(named.params().setParam("profile", "mobile"));
+    EXPECT_EQ(named.getWindow(), 200u);
+    EXPECT_FALSE(named.getSequential());
+    ASSERT_TRUE(named.params().setParam("profile", "auto"));
+    EXPECT_EQ(named.getWindow(), 20u);
+    ORPARC orparc(scenarios::createPlanarCross(4).getSpaceInformation());
+    EXPECT_EQ(orparc.params().getParam("profile")->getValue(), "auto");
 }
 
 TEST(Arc, ProfileAndExplicitParametersInAnyOrder)

@@ -1,5 +1,7 @@
 #include "ompl_parc/arc/ArcSettings.h"
 
+#include "ompl_parc/model/MultiRobotSpaceInformation.h"
+
 #include <ompl/util/Exception.h>
 
 #include <cmath>
@@ -51,6 +53,22 @@ void ompl_parc::ArcSettings::applyProfile(const std::string &name)
     take(STRAIGHT_INITIAL, straightInitial, p.straightInitial);
     take(LATTICE_MAPF, latticeMapf, p.latticeMapf);
     take(SEQUENTIAL, sequential, p.sequential);
+}
+
+std::string ompl_parc::ArcSettings::profileFor(const MultiRobotSpaceInformation &si)
+{
+    const auto any = [&si](const char *kind)
+    {
+        for (std::size_t i = 0; i < si.getRobotCount(); ++i)
+            if (si.getRobot(i)->getKind() == kind)
+                return true;
+        return false;
+    };
+    if (any("urdf_arm"))
+        return "panda";
+    if (any("planar_arm"))
+        return "planar";
+    return "mobile";
 }
 
 std::vector<std::string> ompl_parc::ArcSettings::profileNames()

@@ -6,6 +6,8 @@
 
 namespace ompl_parc
 {
+    class MultiRobotSpaceInformation;
+
     /** \brief The knobs of ARC's conflict resolution, shared by ARC and P-ARC (which expose them as
         declared planner parameters). Defaults are the authors' tuned values for the mobile scenarios. */
     struct ArcSettings
@@ -110,6 +112,12 @@ namespace ompl_parc
 
         /** \brief Half-width of the window for attempt \e k (0 = the first). */
         std::size_t halfWidth(unsigned int k) const;
+
+        /** \brief The profile the team of \e si gets when the user names none ("auto", the planners' default): "panda"
+           if any robot is a URDF arm, else "planar" if any is a planar arm, else "mobile". The mobile defaults on an
+           arm team repair with 200-timestep windows of 5000 samples: Panda Cage 16 then spends its budget on windows
+           the panda profile skips. */
+        static std::string profileFor(const MultiRobotSpaceInformation &si);
 
         static std::vector<std::string> profileNames();
         static Growth growthFromString(const std::string &name);
