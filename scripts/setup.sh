@@ -1,19 +1,31 @@
 #!/usr/bin/env bash
 # Installs every Debian package ompl_parc needs to build, test and run its demos.
 # Idempotent: when all packages are present it only checks (well under a second).
+# Usage: scripts/setup.sh [--demo]   (--demo: only what building the library and the demo tools needs)
 set -euo pipefail
+case "${1:-}" in
+    "" | --demo) ;;
+    *) echo "setup: unknown argument '$1' (usage: scripts/setup.sh [--demo])" >&2; exit 2 ;;
+esac
 
+# What the library and the demo tools need (scripts/demo.sh: `setup.sh --demo`) ...
 PACKAGES=(
     build-essential cmake pkg-config
     libompl-dev libfcl-dev libccd-dev liburdfdom-dev libtinyxml-dev libeigen3-dev libxsimd-dev
     libboost-dev libboost-program-options-dev libboost-serialization-dev
     libboost-filesystem-dev libboost-system-dev
-    nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
-    ompl-demos python3 python3-matplotlib doxygen
-    pybind11-dev python3-dev python3-numpy python3-pytest
-    libopenmpi-dev openmpi-bin
-    clang libclang-rt-dev
+    nlohmann-json3-dev
 )
+# ... and what the tests, benchmarks, Python module, MPI tool, sanitizers and API docs add.
+if [ "${1:-}" != "--demo" ]; then
+    PACKAGES+=(
+        libgtest-dev libgmock-dev libbenchmark-dev
+        ompl-demos python3 python3-matplotlib doxygen
+        pybind11-dev python3-dev python3-numpy python3-pytest
+        libopenmpi-dev openmpi-bin
+        clang libclang-rt-dev
+    )
+fi
 
 missing=()
 for p in "${PACKAGES[@]}"; do

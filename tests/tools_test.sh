@@ -24,6 +24,9 @@ expect() {
     fi
 }
 
+expect 2 "unknown argument '--all'" bash "$scenarios/../../scripts/setup.sh" --all
+expect 0 "profile panda (from the robots" "$bin/ompl_parc_demo" --scenario panda_cage --robots 2 --smooth 0
+expect 0 "profile mobile$" "$bin/ompl_parc_demo" --scenario panda_cage --robots 2 --smooth 0 --param profile=mobile
 expect 0 "validated  yes" "$bin/ompl_parc_demo" --scenario mobile_cross --robots 4 --seed 3 --out "$tmp/sol.json"
 expect 0 "^valid: 4 robots" "$bin/ompl_parc_validate" --scenario mobile_cross --robots 4 "$tmp/sol.json"
 expect 2 "robots' has 4 entries" "$bin/ompl_parc_validate" --scenario mobile_cross --robots 8 "$tmp/sol.json"
