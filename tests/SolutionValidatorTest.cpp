@@ -302,11 +302,10 @@ TEST(SolutionValidator, RobotWithoutDisplacementBoundIsRejectedClearly)
     {
         Blob(EnvironmentPtr env, const ompl::base::RealVectorBounds &bounds) : Robot("blob", std::move(env), bounds) {}
         std::string getKind() const override { return "blob"; }
-        void computeBody(const double *q, CollisionBody &body) const override
+        void computeCapsules(const double *q, CollisionBody &body) const override
         {
             body.clear();
             body.addSphere(q[0], q[1], 0., 0.1);
-            body.updateBound();
         }
     };
     ompl::base::RealVectorBounds bounds(2);

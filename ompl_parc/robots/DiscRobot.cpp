@@ -14,14 +14,13 @@ ompl_parc::DiscRobot::DiscRobot(std::string name, EnvironmentPtr environment, do
         throw ompl::Exception("DiscRobot", "robot '" + getName() + "' needs 2D bounds");
 }
 
-void ompl_parc::DiscRobot::computeBody(const double *q, CollisionBody &body) const
+void ompl_parc::DiscRobot::computeCapsules(const double *q, CollisionBody &body) const
 {
     body.resize(1, true);  // written in place: bodies are computed at every timestep the detector scans
     body.ax_[0] = body.bx_[0] = q[0];
     body.ay_[0] = body.by_[0] = q[1];
     body.az_[0] = body.bz_[0] = 0.;
     body.radius_[0] = radius_;
-    body.updateBound();
 }
 
 std::optional<bool> ompl_parc::DiscRobot::sweepValid(const double *from, const double *to) const

@@ -14,7 +14,7 @@ namespace ompl_parc
                   const ompl::base::RealVectorBounds &bounds);
 
         std::string getKind() const override { return "disc"; }
-        void computeBody(const double *q, CollisionBody &body) const override;
+        void computeCapsules(const double *q, CollisionBody &body) const override;
 
         /** \brief Exact for a translation: the disc sweeps the capsule from \e from to \e to with its radius (tested
             against the obstacles like any capsule), and the bounds box is convex, so \e to in bounds keeps the

@@ -26,7 +26,7 @@ ompl_parc::PlanarArm::PlanarArm(std::string name, EnvironmentPtr environment, do
             selfCollisionPairs_.emplace_back(i, j);
 }
 
-void ompl_parc::PlanarArm::computeBody(const double *q, CollisionBody &body) const
+void ompl_parc::PlanarArm::computeCapsules(const double *q, CollisionBody &body) const
 {
     body.clear();
     double x = baseX_, y = baseY_, angle = baseYaw_;
@@ -39,5 +39,4 @@ void ompl_parc::PlanarArm::computeBody(const double *q, CollisionBody &body) con
         x = nx;
         y = ny;
     }
-    body.updateBound();
 }

@@ -19,7 +19,7 @@ namespace ompl_parc
                   std::vector<double> linkLengths, double linkWidth, const ompl::base::RealVectorBounds &jointLimits);
 
         std::string getKind() const override { return "planar_arm"; }
-        void computeBody(const double *q, CollisionBody &body) const override;
+        void computeCapsules(const double *q, CollisionBody &body) const override;
 
         double getBaseX() const { return baseX_; }
         double getBaseY() const { return baseY_; }

@@ -22,7 +22,7 @@ namespace ompl_parc
         Every robot lives in a bounded real vector space (a workspace box for mobile robots, joint limits
         for arms), so a configuration is a flat array of getDimension() doubles. Plans, conflict scans
         and the validator work on such arrays; OMPL planners work on the robot's own SpaceInformation,
-        whose validity checker is isValid(). Subclasses provide the kinematics in computeBody(). */
+        whose validity checker is isValid(). Subclasses provide the kinematics in computeCapsules(). */
     class Robot
     {
       public:
@@ -46,8 +46,17 @@ namespace ompl_parc
         /** \brief A short kind name ("disc", "planar_arm", ...), written into solution files. */
         virtual std::string getKind() const = 0;
 
-        /** \brief The shape of the robot at configuration \e q (world frame). */
-        virtual void computeBody(const double *q, CollisionBody &body) const = 0;
+        /** \brief The shape of the robot at configuration \e q (world frame), with the bounds the collision tests
+            read (CollisionBody::updateBound()). */
+        void computeBody(const double *q, CollisionBody &body) const
+        {
+            computeCapsules(q, body);
+            body.updateBound();
+        }
+
+        /** \brief The capsules of computeBody() without their bounds: for the SolutionValidator, which tests with
+            its own broad phase and FCL shapes and would spend a fifth of its time on bounds it never reads. */
+        virtual void computeCapsules(const double *q, CollisionBody &body) const = 0;
 
         const ompl::base::SpaceInformationPtr &getSpaceInformation() const { return si_; }
         const ompl::base::StateSpacePtr &getStateSpace() const { return si_->getStateSpace(); }

@@ -553,7 +553,7 @@ Eigen::Isometry3d ompl_parc::UrdfArm::computeTipPose(const double *q) const
     return frames.back() * tipOffset_;
 }
 
-void ompl_parc::UrdfArm::computeBody(const double *q, CollisionBody &body) const
+void ompl_parc::UrdfArm::computeCapsules(const double *q, CollisionBody &body) const
 {
     thread_local std::vector<Eigen::Matrix3d> rotations;
     thread_local std::vector<Eigen::Vector3d> translations;
@@ -573,7 +573,6 @@ void ompl_parc::UrdfArm::computeBody(const double *q, CollisionBody &body) const
         body.bz_[i] = b.z();
         body.radius_[i] = c.radius;
     }
-    body.updateBound();
 }
 
 bool ompl_parc::UrdfArm::solvePositionIk(const Eigen::Vector3d &target, std::mt19937 &rng, std::vector<double> &q,

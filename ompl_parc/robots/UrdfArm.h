@@ -55,7 +55,7 @@ namespace ompl_parc
         static Eigen::Isometry3d pose(double x, double y, double z, double roll, double pitch, double yaw);
 
         std::string getKind() const override { return "urdf_arm"; }
-        void computeBody(const double *q, CollisionBody &body) const override;
+        void computeCapsules(const double *q, CollisionBody &body) const override;
 
         /** \brief Bounds one by one, then self-collision and the environment UrdfArmLanes::width()
             configurations at a time (single precision, conservative; see UrdfArmLanes). */

@@ -4,36 +4,39 @@
 #include "ompl_parc/robots/PlanarArm.h"
 #include "ompl_parc/robots/UrdfArm.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
 
 namespace
 {
-    /** Joint k turns link k and everything after it about the link's start; any point of link j >= k is within
-        the link lengths k..j plus the half width of the joint. */
-    std::vector<double> planarArmLevers(const ompl_parc::PlanarArm &arm)
+    /** Per capsule (link j) and joint k: joint k turns link k and everything after it about the link's start; any
+        point of link j >= k is within the link lengths k..j plus the half width of the joint. */
+    std::vector<std::vector<double>> planarArmLevers(const ompl_parc::PlanarArm &arm)
     {
         const auto &lengths = arm.getLinkLengths();
-        std::vector<double> levers(lengths.size());
-        for (std::size_t k = 0; k < lengths.size(); ++k)
-            levers[k] = std::accumulate(lengths.begin() + static_cast<std::ptrdiff_t>(k), lengths.end(), 0.) +
-                        0.5 * arm.getLinkWidth();
+        std::vector<std::vector<double>> levers(lengths.size(), std::vector<double>(lengths.size(), 0.));
+        for (std::size_t j = 0; j < lengths.size(); ++j)
+            for (std::size_t k = 0; k <= j; ++k)
+                levers[j][k] = std::accumulate(lengths.begin() + static_cast<std::ptrdiff_t>(k),
+                                               lengths.begin() + static_cast<std::ptrdiff_t>(j) + 1, 0.) +
+                               0.5 * arm.getLinkWidth();
         return levers;
     }
 
     /** Joint k (coordinate k) turns chain link k + 1 about an axis through its frame origin o_{k+1}. A capsule on
         link f >= k + 1 is within |o_j - o_{j-1}| summed over j = k + 2 .. f (rigid links: the same at every
         configuration) plus its farther end's distance from o_f plus its radius. Measured at the zero
-        configuration, where every such distance is what it is everywhere. */
-    std::vector<double> urdfArmLevers(const ompl_parc::UrdfArm &arm)
+        configuration, where every such distance is what it is everywhere. Per capsule and joint. */
+    std::vector<std::vector<double>> urdfArmLevers(const ompl_parc::UrdfArm &arm)
     {
         const std::vector<double> zero(arm.getDimension(), 0.);
         std::vector<Eigen::Isometry3d> frames;
         arm.computeFrames(zero.data(), frames);
         ompl_parc::CollisionBody body;
         arm.computeBody(zero.data(), body);
-        std::vector<double> levers(arm.getDimension(), 0.);
+        std::vector<std::vector<double>> levers(body.size(), std::vector<double>(arm.getDimension(), 0.));
         for (std::size_t c = 0; c < body.size(); ++c)
         {
             const std::size_t f = arm.getPrimitives()[c].frame;
@@ -44,7 +47,7 @@ namespace
             double chain = 0.;  // |o_f - o_{f-1}| + ... + |o_{k+2} - o_{k+1}|, growing as k goes down
             for (std::size_t k = f; k-- > 0;)
             {
-                levers[k] = std::max(levers[k], chain + reach);
+                levers[c][k] = chain + reach;
                 chain += (frames[k + 1].translation() - frames[k].translation()).norm();
             }
         }
@@ -57,12 +60,27 @@ ompl_parc::DisplacementBound::DisplacementBound(const Robot &robot)
     if (dynamic_cast<const DiscRobot *>(&robot) != nullptr)
         return;
     if (const auto *arm = dynamic_cast<const PlanarArm *>(&robot))
-        levers_ = planarArmLevers(*arm);
+        capsuleLevers_ = planarArmLevers(*arm);
     else if (const auto *urdf = dynamic_cast<const UrdfArm *>(&robot))
-        levers_ = urdfArmLevers(*urdf);
+        capsuleLevers_ = urdfArmLevers(*urdf);
     else
         throw std::invalid_argument("SolutionValidator: no displacement bound for robot '" + robot.getName() +
                                     "' of kind '" + robot.getKind() + "'");
+    // The whole body's lever of a joint: the largest of its capsules'.
+    levers_.assign(robot.getDimension(), 0.);
+    for (const auto &capsule : capsuleLevers_)
+        for (std::size_t k = 0; k < levers_.size(); ++k)
+            levers_[k] = std::max(levers_[k], capsule[k]);
+}
+
+double ompl_parc::DisplacementBound::capsuleBound(std::size_t capsule, const double *dq) const
+{
+    if (capsuleLevers_.empty())
+        return std::hypot(dq[0], dq[1]);
+    double bound = 0.;
+    for (std::size_t k = 0; k < levers_.size(); ++k)
+        bound += std::abs(dq[k]) * capsuleLevers_[capsule][k];
+    return bound;
 }
 
 double ompl_parc::DisplacementBound::operator()(const double *dq) const

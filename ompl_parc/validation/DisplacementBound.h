@@ -33,8 +33,16 @@ namespace ompl_parc
         /** \brief Per coordinate, the lever (empty for a translation). */
         const std::vector<double> &getLevers() const { return levers_; }
 
+        /** \brief Largest distance any point of capsule \e capsule of the body (CollisionBody order) moves on the
+            straight motion by \e dq: the same sum with only the joints that move that capsule, each with that
+            capsule's lever. Never above operator(); 0 for a capsule no joint moves (an arm's base). */
+        double capsuleBound(std::size_t capsule, const double *dq) const;
+
       private:
         std::vector<double> levers_;
+        /** \brief Per capsule and coordinate, the capsule's lever (0: the joint does not move it); empty for a
+            translation. */
+        std::vector<std::vector<double>> capsuleLevers_;
     };
 }  // namespace ompl_parc
 

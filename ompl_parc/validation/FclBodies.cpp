@@ -40,6 +40,22 @@ ompl_parc::FclBodies::FclBodies(const MultiRobotSpaceInformation &si, const std:
     swept_.capsule = std::make_shared<fcl::Capsuled>(1., 1.);
 }
 
+Eigen::Matrix3d ompl_parc::FclBodies::rotationFromZ(const Eigen::Vector3d &d)
+{
+    // Rodrigues' formula about Z x e for a unit e with e.z >= 0 (no division by a small 1 + e.z), and for d.z < 0 the
+    // rotation to -d after a half turn about X (which takes Z to -Z).
+    const bool flip = d.z() < 0.;
+    const Eigen::Vector3d e = flip ? Eigen::Vector3d(-d) : d;
+    const double k = 1. / (1. + e.z());
+    Eigen::Matrix3d r;
+    r << 1. - e.x() * e.x() * k, -e.x() * e.y() * k, e.x(),  //
+        -e.x() * e.y() * k, 1. - e.y() * e.y() * k, e.y(),   //
+        -e.x(), -e.y(), e.z();
+    if (flip)
+        r.rightCols<2>() *= -1.;
+    return r;
+}
+
 void ompl_parc::FclBodies::setShape(Part &part, const Eigen::Vector3d &a, const Eigen::Vector3d &b, double radius)
 {
     const double length = (b - a).norm();
@@ -52,7 +68,7 @@ void ompl_parc::FclBodies::setShape(Part &part, const Eigen::Vector3d &a, const 
         part.capsule->radius = radius;
         part.capsule->lz = length;
         if (length > 0.)
-            part.pose.linear() = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), b - a).toRotationMatrix();
+            part.pose.linear() = rotationFromZ((b - a) / length);
     }
     part.geometry()->computeLocalAABB();
     const double reach = part.sphere ? part.sphere->radius : radius;
@@ -60,11 +76,13 @@ void ompl_parc::FclBodies::setShape(Part &part, const Eigen::Vector3d &a, const 
                                    a.cwiseMax(b) + Eigen::Vector3d::Constant(reach));
 }
 
-void ompl_parc::FclBodies::place(std::size_t robot, const CollisionBody &body, double shrink, double grow)
+void ompl_parc::FclBodies::place(std::size_t robot, const CollisionBody &body, double shrink,
+                                 const std::vector<double> &grow, const std::vector<char> &mask)
 {
     for (std::size_t c = 0; c < body.size(); ++c)
-        setShape(parts_[first_[robot] + c], {body.ax_[c], body.ay_[c], body.az_[c]},
-                 {body.bx_[c], body.by_[c], body.bz_[c]}, std::max(body.radius_[c] - shrink, MIN_RADIUS) + grow);
+        if (mask[c])
+            setShape(parts_[first_[robot] + c], {body.ax_[c], body.ay_[c], body.az_[c]},
+                     {body.bx_[c], body.by_[c], body.bz_[c]}, std::max(body.radius_[c] - shrink, MIN_RADIUS) + grow[c]);
 }
 
 bool ompl_parc::FclBodies::touch(const Part &p, const Part &q)
@@ -85,27 +103,31 @@ bool ompl_parc::FclBodies::touch(const Part &p, const Obstacle &o)
     return fcl::collide(p.geometry(), p.pose, o.geometry.get(), o.pose, request, result) > 0;
 }
 
-bool ompl_parc::FclBodies::robotsCollide(std::size_t i, std::size_t j) const
+bool ompl_parc::FclBodies::robotsCollide(std::size_t i, std::size_t j, const std::vector<char> &maskI,
+                                         const std::vector<char> &maskJ) const
 {
-    for (std::size_t p = first_[i]; p < first_[i + 1]; ++p)
-        for (std::size_t q = first_[j]; q < first_[j + 1]; ++q)
-            if (touch(parts_[p], parts_[q]))
-                return true;
+    for (std::size_t p = 0; p < maskI.size(); ++p)
+        if (maskI[p])
+            for (std::size_t q = 0; q < maskJ.size(); ++q)
+                if (maskJ[q] && touch(parts_[first_[i] + p], parts_[first_[j] + q]))
+                    return true;
     return false;
 }
 
-bool ompl_parc::FclBodies::hitsObstacle(std::size_t robot, std::size_t k) const
+bool ompl_parc::FclBodies::hitsObstacle(std::size_t robot, std::size_t k, const std::vector<char> &mask) const
 {
-    for (std::size_t p = first_[robot]; p < first_[robot + 1]; ++p)
-        if (touch(parts_[p], obstacles_[k]))
+    for (std::size_t p = 0; p < mask.size(); ++p)
+        if (mask[p] && touch(parts_[first_[robot] + p], obstacles_[k]))
             return true;
     return false;
 }
 
-bool ompl_parc::FclBodies::selfCollides(std::size_t robot, std::pair<std::size_t, std::size_t> &links) const
+bool ompl_parc::FclBodies::selfCollides(std::size_t robot, std::pair<std::size_t, std::size_t> &links,
+                                        const std::vector<char> &mask) const
 {
     for (const auto &pair : *selfPairs_[robot])
-        if (touch(parts_[first_[robot] + pair.first], parts_[first_[robot] + pair.second]))
+        if (mask[pair.first] && mask[pair.second] &&
+            touch(parts_[first_[robot] + pair.first], parts_[first_[robot] + pair.second]))
         {
             links = pair;
             return true;

@@ -31,16 +31,22 @@ namespace ompl_parc
         std::size_t getObstacleCount() const { return obstacles_.size(); }
         const Eigen::AlignedBox3d &getObstacleBox(std::size_t k) const { return obstacles_[k].box; }
 
-        /** \brief Put robot \e robot's shapes at \e body, capsule radii max(r - shrink, MIN_RADIUS) + grow. */
-        void place(std::size_t robot, const CollisionBody &body, double shrink, double grow);
+        /** \brief Put the shapes of \e robot's capsules c with mask[c] set at \e body, radii
+            max(r - shrink, MIN_RADIUS) + grow[c]; the others keep where they were. The tests below read only the
+            capsules their masks set: those a broad phase could not rule out. */
+        void place(std::size_t robot, const CollisionBody &body, double shrink, const std::vector<double> &grow,
+                   const std::vector<char> &mask);
 
-        /** \brief Whether the placed shapes of two different robots touch. */
-        bool robotsCollide(std::size_t i, std::size_t j) const;
-        /** \brief Whether the placed shapes of \e robot touch obstacle \e k. */
-        bool hitsObstacle(std::size_t robot, std::size_t k) const;
-        /** \brief The first self-collision pair (capsule indices) of \e robot's placed shapes that touches, or
-            nothing. */
-        bool selfCollides(std::size_t robot, std::pair<std::size_t, std::size_t> &links) const;
+        /** \brief Whether the placed shapes of two different robots touch (the capsules of \e maskI and
+            \e maskJ). */
+        bool robotsCollide(std::size_t i, std::size_t j, const std::vector<char> &maskI,
+                           const std::vector<char> &maskJ) const;
+        /** \brief Whether the placed shapes of \e robot (those of \e mask) touch obstacle \e k. */
+        bool hitsObstacle(std::size_t robot, std::size_t k, const std::vector<char> &mask) const;
+        /** \brief The first self-collision pair (capsule indices) of \e robot's placed shapes, both in \e mask, that
+            touches, or nothing. */
+        bool selfCollides(std::size_t robot, std::pair<std::size_t, std::size_t> &links,
+                          const std::vector<char> &mask) const;
 
         /** \brief Whether a sphere of \e radius swept from \e a to \e b (a capsule) touches obstacle \e k. */
         bool sweptSphereHitsObstacle(const Eigen::Vector3d &a, const Eigen::Vector3d &b, double radius, std::size_t k);
@@ -62,6 +68,10 @@ namespace ompl_parc
             fcl::Transform3d pose;
             Eigen::AlignedBox3d box;
         };
+
+        /** \brief A rotation taking Z to the unit vector \e d (a capsule's axis; the turn about it is any, a capsule
+            being round): closed form, where Eigen's FromTwoVectors takes an SVD for every axis pointing down. */
+        static Eigen::Matrix3d rotationFromZ(const Eigen::Vector3d &d);
 
         /** \brief Give \e part the capsule (a, b, radius). */
         static void setShape(Part &part, const Eigen::Vector3d &a, const Eigen::Vector3d &b, double radius);

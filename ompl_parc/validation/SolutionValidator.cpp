@@ -129,16 +129,20 @@ namespace
                     margin = std::min(margin, std::max(r - options.contactTolerance, MIN_RADIUS) -
                                                   std::max(r - options.substepSlack, MIN_RADIUS));
                 margin_.push_back(margin);
+                capsules_.push_back(templates[i].size());
                 // Per piece, the displacement bound of one timestep on it.
                 const LinearMotion &motion = motions[i];
                 std::vector<double> dq(motion.getDimension());
                 steps_.emplace_back(motion.getPieceCount());
+                capsuleSteps_.emplace_back(motion.getPieceCount(), std::vector<double>(templates[i].size()));
                 for (std::size_t p = 0; p < motion.getPieceCount(); ++p)
                 {
+                    const auto duration = static_cast<double>(motion.getEndTime(p) - motion.getStartTime(p));
                     for (unsigned int d = 0; d < motion.getDimension(); ++d)
                         dq[d] = motion.getEnd(p)[d] - motion.getStart(p)[d];
-                    steps_[i][p] =
-                        displacement[i](dq.data()) / static_cast<double>(motion.getEndTime(p) - motion.getStartTime(p));
+                    steps_[i][p] = displacement[i](dq.data()) / duration;
+                    for (std::size_t k = 0; k < templates[i].size(); ++k)
+                        capsuleSteps_[i][p][k] = displacement[i].capsuleBound(k, dq.data()) / duration;
                 }
                 sphere_.push_back(displacement[i].isTranslation() && templates[i].size() == 1 &&
                                           templates[i].ax_[0] == templates[i].bx_[0] &&
@@ -194,6 +198,7 @@ namespace
 
       private:
         static constexpr double MIN_RADIUS = ompl_parc::FclBodies::MIN_RADIUS;
+        static constexpr double INF = std::numeric_limits<double>::infinity();
 
         struct Worker
         {
@@ -206,6 +211,12 @@ namespace
             ompl_parc::CollisionBody body;
             std::vector<double> q;
             std::vector<std::size_t> order;
+            /** Scratch of mayTouch(): per capsule of the candidate's robots, its box over one interval, and whether
+                the narrow phase needs it; the growth of each capsule between timesteps, and at timesteps (the pad). */
+            std::vector<Box> boxesA, boxesB;
+            std::vector<char> maskA, maskB;
+            ompl_parc::CollisionBody bodyA, bodyB;
+            std::vector<double> growA, growB, pad;
             std::size_t checked{0};
             std::optional<Event> best;
         };
@@ -259,7 +270,7 @@ namespace
             const auto add = [&](std::size_t piece, std::size_t t)
             {
                 motion.interpolate(piece, static_cast<double>(t), worker.q.data());
-                robot.computeBody(worker.q.data(), worker.body);
+                robot.computeCapsules(worker.q.data(), worker.body);
                 worker.body.expandBox(box.lo, box.hi);
             };
             if (motion.getPieceCount() == 0)  // a plan of one timestep
@@ -359,6 +370,7 @@ namespace
             if (b1 == makespan_)
             {
                 const auto end = static_cast<double>(b1);
+                selectAll(c, worker);
                 return checkSample(c, end, false, motions_[c.a].findPiece(end), pair ? motions_[c.b].findPiece(end) : 0,
                                    worker);
             }
@@ -397,90 +409,222 @@ namespace
             const bool still = (ma.getPieceCount() == 0 || ma.isStill(pa)) &&
                                (!pair || motions_[c.b].getPieceCount() == 0 || motions_[c.b].isStill(pb));
             if (still)  // nothing moves: one timestep stands for the whole span
+            {
+                selectAll(c, worker);
                 return checkSample(c, static_cast<double>(ta), false, pa, pb, worker);
+            }
             const double da = steps_[c.a][pa], db = pair ? steps_[c.b][pb] : 0.;
             // Displacement of one body relative to the other over a timestep. Two links of one arm move relative
             // to each other only by the joints between them, which da bounds: each side takes half the growth.
             const double total = pair ? da + db : da;
-            // The growths (ga + gb, or twice ga for self) add up to total/2m: within half the slack.
+            // The growths (ga + gb, or twice ga for self) add up to total/2m at most: within half the slack.
             const auto m = static_cast<unsigned int>(
                 std::max<double>(options_.substeps, std::ceil(total / options_.substepSlack)));
             const double ga = da / ((c.kind == Kind::SELF ? 4. : 2.) * m), gb = db / (2. * m);
             const bool ends = ga > margin_[c.a] || (pair && gb > margin_[c.b]);
+            // Between timesteps each capsule grows by its own displacement to the nearest sample (at most ga, gb);
+            // for self-collision every capsule takes half the relative displacement's share.
+            fillGrowth(c.a, pa, c.kind == Kind::SELF ? ga : -1., 2. * m, worker.growA);
+            if (pair)
+                fillGrowth(c.b, pb, -1., 2. * m, worker.growB);
             for (std::size_t t = ta; t < tb; ++t)
             {
-                if (c.kind != Kind::SELF && !mayTouch(c, t, pa, pb, worker))
+                if (!mayTouch(c, t, pa, pb, worker))
+                    continue;
+                // A capsule that does not move on the piece (an arm's base) against an obstacle: its test at the
+                // span's first timestep stands for the span, every later sample being that configuration, tested
+                // with radii no larger.
+                if (c.kind == Kind::OBSTACLE && t > ta && !dropStill(c.a, pa, worker.maskA))
+                    continue;
+                if (intervalClear(c, pa, pb, worker))
                     continue;
                 if (auto event = checkSample(c, static_cast<double>(t), false, pa, pb, worker))
                     return event;
                 for (unsigned int j = ends ? 0 : 1; j <= (ends ? m : m - 1); ++j)
                 {
                     const double u = static_cast<double>(t) + static_cast<double>(j) / m;
-                    if (auto event = checkSample(c, u, true, pa, pb, worker, ga, gb))
+                    if (auto event = checkSample(c, u, true, pa, pb, worker))
                         return event;
                 }
             }
             return std::nullopt;
         }
 
-        /** The broad phase of one timestep and the interval after it: boxes of the bodies at t and t + 1, grown
-            by half a step's displacement (and the pad), against each other or the obstacle's. */
-        bool mayTouch(const Candidate &c, std::size_t t, std::size_t pa, std::size_t pb, Worker &worker) const
+        /** One FCL test for the interval [t, t + 1] mayTouch() just boxed: the selected capsules at t (the bodies it
+            left in worker.bodyA, bodyB), each with the largest radius any sample of the interval gives it, grown by
+            its displacement bound of the whole step. Every capsule of every sample in the interval lies inside
+            these, so if they touch nothing, no sample can (most intervals whose boxes meet, in arm teams: one test
+            instead of one per sample). */
+        bool intervalClear(const Candidate &c, std::size_t pa, std::size_t pb, Worker &worker) const
         {
-            const auto box = [&](std::size_t robot, std::size_t piece)
+            const auto place = [&](std::size_t robot, std::size_t piece, const ompl_parc::CollisionBody &body,
+                                   const std::vector<double> &grow, const std::vector<char> &mask)
             {
-                Box b;
-                b.lo.fill(std::numeric_limits<double>::infinity());
-                b.hi.fill(-std::numeric_limits<double>::infinity());
-                worker.q.resize(motions_[robot].getDimension());
-                for (std::size_t u = t; u <= t + 1; ++u)
-                {
-                    motions_[robot].interpolate(piece, static_cast<double>(u), worker.q.data());
-                    si_.getRobot(robot)->computeBody(worker.q.data(), worker.body);
-                    worker.body.expandBox(b.lo, b.hi);
-                }
-                const double grow = 0.5 * steps_[robot][piece] + pad_[robot];
-                for (int d = 0; d < 3; ++d)
-                {
-                    b.lo[d] -= grow;
-                    b.hi[d] += grow;
-                }
-                return b;
+                worker.pad.resize(body.size());
+                for (std::size_t k = 0; k < body.size(); ++k)
+                    worker.pad[k] = std::max(pad_[robot], grow[k]) + capsuleSteps_[robot][piece][k];
+                worker.fcl.place(robot, body, options_.contactTolerance, worker.pad, mask);
+                ++worker.checked;
             };
-            const Box a = box(c.a, pa);
-            if (c.kind == Kind::PAIR)
-                return a.overlaps(box(c.b, pb));
-            return a.overlaps(obstacleBoxes_[c.b]);
+            place(c.a, pa, worker.bodyA, worker.growA, worker.maskA);
+            switch (c.kind)
+            {
+                case Kind::OBSTACLE:
+                    return !worker.fcl.hitsObstacle(c.a, c.b, worker.maskA);
+                case Kind::SELF:
+                {
+                    std::pair<std::size_t, std::size_t> links;
+                    return !worker.fcl.selfCollides(c.a, links, worker.maskA);
+                }
+                case Kind::PAIR:
+                    place(c.b, pb, worker.bodyB, worker.growB, worker.maskB);
+                    return !worker.fcl.robotsCollide(c.a, c.b, worker.maskA, worker.maskB);
+                case Kind::BOUNDS:
+                    break;
+            }
+            return false;
         }
 
-        /** FCL at time \e u: radii shrunk by the contact tolerance at a timestep, by the slack and grown by
-            \e ga, \e gb between timesteps. */
+        /** \e grow: per capsule of \e robot, \e uniform if not negative, else its displacement bound of one
+            timestep on \e piece over \e divisor; plus the pad. */
+        void fillGrowth(std::size_t robot, std::size_t piece, double uniform, double divisor,
+                        std::vector<double> &grow) const
+        {
+            const std::vector<double> &steps = capsuleSteps_[robot][piece];
+            grow.resize(steps.size());
+            for (std::size_t k = 0; k < steps.size(); ++k)
+                grow[k] = (uniform >= 0. ? uniform : steps[k] / divisor) + pad_[robot];
+        }
+
+        /** Clears the capsules of \e mask that do not move on \e piece; false if none is left. */
+        bool dropStill(std::size_t robot, std::size_t piece, std::vector<char> &mask) const
+        {
+            bool any = false;
+            for (std::size_t k = 0; k < mask.size(); ++k)
+            {
+                mask[k] = mask[k] && capsuleSteps_[robot][piece][k] > 0.;
+                any = any || mask[k];
+            }
+            return any;
+        }
+
+        /** Every capsule of the candidate's robots selected: for the samples no mayTouch() ran for. */
+        void selectAll(const Candidate &c, Worker &worker) const
+        {
+            worker.maskA.assign(capsules_[c.a], 1);
+            if (c.kind == Kind::PAIR)
+                worker.maskB.assign(capsules_[c.b], 1);
+        }
+
+        /** The broad phase of one timestep and the interval after it, capsule by capsule: per capsule a box around
+            it at t and t + 1 grown by half its displacement bound of a step and the pad (every point of a capsule
+            stays within half a step's displacement of where it is at one end), against the other robot's capsules,
+            the obstacle's box, or for self-collision the capsule's pairs. Selects in worker.maskA (maskB) the
+            capsules whose boxes meet; false if there are none. */
+        bool mayTouch(const Candidate &c, std::size_t t, std::size_t pa, std::size_t pb, Worker &worker) const
+        {
+            sweptCapsuleBoxes(c.a, pa, t, worker, worker.boxesA, worker.bodyA);
+            const std::vector<Box> &a = worker.boxesA;
+            std::vector<char> &maskA = worker.maskA;
+            maskA.assign(a.size(), 0);
+            bool any = false;
+            switch (c.kind)
+            {
+                case Kind::PAIR:
+                {
+                    sweptCapsuleBoxes(c.b, pb, t, worker, worker.boxesB, worker.bodyB);
+                    const std::vector<Box> &b = worker.boxesB;
+                    worker.maskB.assign(b.size(), 0);
+                    for (std::size_t p = 0; p < a.size(); ++p)
+                        for (std::size_t q = 0; q < b.size(); ++q)
+                            if (a[p].overlaps(b[q]))
+                                maskA[p] = worker.maskB[q] = 1;
+                    break;
+                }
+                case Kind::OBSTACLE:
+                    for (std::size_t p = 0; p < a.size(); ++p)
+                        maskA[p] = a[p].overlaps(obstacleBoxes_[c.b]);
+                    break;
+                case Kind::SELF:
+                    for (const auto &pair : si_.getRobot(c.a)->getSelfCollisionPairs())
+                        if (a[pair.first].overlaps(a[pair.second]))
+                            maskA[pair.first] = maskA[pair.second] = 1;
+                    break;
+                case Kind::BOUNDS:
+                    break;
+            }
+            for (char selected : maskA)
+                any = any || selected != 0;
+            return any;
+        }
+
+        /** Per capsule of \e robot on \e piece, the box of mayTouch() over [t, t + 1]; \e body: the body at t. */
+        void sweptCapsuleBoxes(std::size_t robot, std::size_t piece, std::size_t t, Worker &worker,
+                               std::vector<Box> &boxes, ompl_parc::CollisionBody &body) const
+        {
+            worker.q.resize(motions_[robot].getDimension());
+            for (std::size_t u = t + 2; u-- > t;)  // t + 1, then t: the body at t stays
+            {
+                motions_[robot].interpolate(piece, static_cast<double>(u), worker.q.data());
+                si_.getRobot(robot)->computeCapsules(worker.q.data(), body);
+                if (u == t + 1)
+                    boxes.assign(body.size(), Box{{INF, INF, INF}, {-INF, -INF, -INF}});
+                for (std::size_t k = 0; k < body.size(); ++k)
+                {
+                    const double r = body.radius_[k];
+                    const std::array<double, 3> ends[2] = {{body.ax_[k], body.ay_[k], body.az_[k]},
+                                                           {body.bx_[k], body.by_[k], body.bz_[k]}};
+                    for (const auto &end : ends)
+                        for (int d = 0; d < 3; ++d)
+                        {
+                            boxes[k].lo[d] = std::min(boxes[k].lo[d], end[d] - r);
+                            boxes[k].hi[d] = std::max(boxes[k].hi[d], end[d] + r);
+                        }
+                }
+            }
+            for (std::size_t k = 0; k < boxes.size(); ++k)
+            {
+                const double grow = 0.5 * capsuleSteps_[robot][piece][k] + pad_[robot];
+                for (int d = 0; d < 3; ++d)
+                {
+                    boxes[k].lo[d] -= grow;
+                    boxes[k].hi[d] += grow;
+                }
+            }
+        }
+
+        /** FCL at time \e u on the capsules worker.maskA (maskB) selects: radii shrunk by the contact tolerance and
+            grown by the pad at a timestep, shrunk by the slack and grown by worker.growA (growB) between
+            timesteps. */
         std::optional<Event> checkSample(const Candidate &c, double u, bool substep, std::size_t pa, std::size_t pb,
-                                         Worker &worker, double ga = 0., double gb = 0.) const
+                                         Worker &worker) const
         {
             const double shrink = substep ? options_.substepSlack : options_.contactTolerance;
-            const auto place = [&](std::size_t robot, std::size_t piece, double grow)
+            const auto place = [&](std::size_t robot, std::size_t piece, const std::vector<double> &grow,
+                                   const std::vector<char> &mask)
             {
                 worker.q.resize(motions_[robot].getDimension());
                 motions_[robot].interpolate(piece, u, worker.q.data());
-                si_.getRobot(robot)->computeBody(worker.q.data(), worker.body);
-                worker.fcl.place(robot, worker.body, shrink, grow + pad_[robot]);
+                si_.getRobot(robot)->computeCapsules(worker.q.data(), worker.body);
+                if (!substep)
+                    worker.pad.assign(worker.body.size(), pad_[robot]);
+                worker.fcl.place(robot, worker.body, shrink, substep ? grow : worker.pad, mask);
                 ++worker.checked;
             };
-            place(c.a, pa, ga);
+            place(c.a, pa, worker.growA, worker.maskA);
             std::pair<std::size_t, std::size_t> links{0, 0};
             bool hit = false;
             switch (c.kind)
             {
                 case Kind::OBSTACLE:
-                    hit = worker.fcl.hitsObstacle(c.a, c.b);
+                    hit = worker.fcl.hitsObstacle(c.a, c.b, worker.maskA);
                     break;
                 case Kind::SELF:
-                    hit = worker.fcl.selfCollides(c.a, links);
+                    hit = worker.fcl.selfCollides(c.a, links, worker.maskA);
                     break;
                 case Kind::PAIR:
-                    place(c.b, pb, gb);
-                    hit = worker.fcl.robotsCollide(c.a, c.b);
+                    place(c.b, pb, worker.growB, worker.maskB);
+                    hit = worker.fcl.robotsCollide(c.a, c.b, worker.maskA, worker.maskB);
                     break;
                 case Kind::BOUNDS:
                     break;
@@ -504,6 +648,10 @@ namespace
         std::vector<double> pad_, margin_, sphere_;
         /** Per robot and piece, the displacement bound of one timestep. */
         std::vector<std::vector<double>> steps_;
+        /** Per robot, its body's capsule count. */
+        std::vector<std::size_t> capsules_;
+        /** Per robot, piece and capsule, the capsule's displacement bound of one timestep (at most steps_'s). */
+        std::vector<std::vector<std::vector<double>>> capsuleSteps_;
         std::vector<Box> boxes_, obstacleBoxes_;
         std::vector<char> active_;
         /** The blocks to check, in increasing order (listEventfulBlocks()). */

@@ -61,10 +61,16 @@ namespace ompl_parc
         timestep's DisplacementBound). Only pairs and obstacles whose boxes overlap in a block are tested, and
         only when one of them moves there. A disc on a piece is tested whole: its swept capsule against an
         obstacle, the closest approach of two discs' linear relative motion against the sum of radii. The rest
-        goes timestep by timestep: FCL at the timestep, and between timesteps FCL at m samples with radii grown
-        by each body's largest displacement to the nearest sample (DisplacementBound / 2m), m chosen so the
-        growth stays within half the slack: any overlap at any instant shows at a sample. Blocks, pairs and
-        obstacles run on several threads; the report is the earliest violation whatever the threads. */
+        goes timestep by timestep. Per interval [t, t + 1], each capsule gets a box around it at t and t + 1
+        grown by half its own displacement bound of a step (DisplacementBound::capsuleBound()); only the capsules
+        whose boxes meet the other side's are tested further. Then one FCL test of those capsules at t, each grown
+        by its displacement over the whole step (with the largest radius any sample uses): every sample of the
+        interval lies inside, so if nothing touches, the interval is clear. Otherwise FCL at the timestep, and
+        between timesteps FCL at m samples with radii grown by each capsule's displacement to the nearest sample
+        (at most the body's DisplacementBound / 2m), m chosen so the growth stays within half the slack: any
+        overlap at any instant shows at a sample. A capsule that does not move on a piece (an arm's base) is tested
+        against an obstacle once per span. Blocks, pairs and obstacles run on several threads; the report is the
+        earliest violation whatever the threads. */
     class SolutionValidator
     {
       public:
