@@ -6,7 +6,7 @@
 #include <string>
 
 ompl_parc::LinearMotion::LinearMotion(unsigned int dimension)
-  : dimension_(dimension), slopeLow_(dimension), slopeHigh_(dimension)
+    : dimension_(dimension), slopeLow_(dimension), slopeHigh_(dimension)
 {
 }
 
@@ -69,8 +69,8 @@ void ompl_parc::LinearMotion::interpolate(std::size_t piece, double time, double
         return;
     }
     const double *b = getEnd(piece);
-    const double s = (time - static_cast<double>(times_[piece])) /
-                     static_cast<double>(times_[piece + 1] - times_[piece]);
+    const double s =
+        (time - static_cast<double>(times_[piece])) / static_cast<double>(times_[piece + 1] - times_[piece]);
     for (unsigned int d = 0; d < dimension_; ++d)
         q[d] = a[d] + s * (b[d] - a[d]);
 }

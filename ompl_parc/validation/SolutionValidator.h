@@ -58,8 +58,8 @@ namespace ompl_parc
         How: each robot's motion is read as linear pieces (LinearMotion). Time is cut into blocks of 64
         timesteps; per robot and block a box contains its body at every instant of the block (for a disc the
         hull of its bodies at the ends of each piece, for an arm its bodies at the timesteps grown by half a
-        timestep's DisplacementBound). Only pairs and obstacles whose boxes overlap in a block are tested, and
-        only when one of them moves there. A disc on a piece is tested whole: its swept capsule against an
+        timestep's DisplacementBound). Only pairs and obstacles whose boxes overlap in a block are tested (the pairs
+        found by a uniform grid, BoxOverlaps), and only when one of them moves there. A disc on a piece is tested whole: its swept capsule against an
         obstacle, the closest approach of two discs' linear relative motion against the sum of radii. The rest
         goes timestep by timestep. Per interval [t, t + 1], each capsule gets a box around it at t and t + 1
         grown by half its own displacement bound of a step (DisplacementBound::capsuleBound()); only the capsules
