@@ -26,6 +26,7 @@ ompl_parc::ORPARC::ORPARC(const ob::SpaceInformationPtr &si)
     smoothing_.setReplanner([] { return PrioritizedSTRRTSolver::makeReplanner(); });
     smoothing_.setTeamReplanShare(0.5);
     declareParam<unsigned int>("total_workers", this, &ORPARC::setTotalWorkers, &ORPARC::getTotalWorkers, "1:1:64");
+    declareParam<bool>("diversify", this, &ORPARC::setDiversify, &ORPARC::getDiversify, "0,1");
     declareParam<std::string>("objective", this, &ORPARC::setObjective, &ORPARC::getObjective,
                               "first,makespan,sum_of_costs");
     for (const auto &[name, property] : progress_.properties())
@@ -69,7 +70,7 @@ void ompl_parc::ORPARC::setProblemDefinition(const ob::ProblemDefinitionPtr &pde
     resultSmoothing_.reset();
 }
 
-std::shared_ptr<ompl_parc::PARC> ompl_parc::ORPARC::makeRacer(std::uint_fast32_t seed)
+std::shared_ptr<ompl_parc::PARC> ompl_parc::ORPARC::makeRacer(unsigned int k, std::uint_fast32_t seed)
 {
     // The profile first: it sets the fields no other parameter was set for (ArcSettings::explicitFields),
     // and the prototype's values of all other parameters then make each racer equal to the prototype.
@@ -81,6 +82,12 @@ std::shared_ptr<ompl_parc::PARC> ompl_parc::ORPARC::makeRacer(std::uint_fast32_t
     racer->params().setParam("profile", profile);
     racer->params().setParams(values, true);
     racer->setSeed(static_cast<unsigned int>(seed));
+    if (diversify_ && k % 2 == 1)
+    {
+        const ArcSettings eager = racer->getSettings().eager();
+        racer->setSampleCap(eager.sampleCap);
+        racer->setMinWindowGrowth(eager.minWindowGrowth);
+    }
     racer->setSmoothing(0.);
     racer->reportProgressInto(progress_);
     return racer;
@@ -88,14 +95,14 @@ std::shared_ptr<ompl_parc::PARC> ompl_parc::ORPARC::makeRacer(std::uint_fast32_t
 
 void ompl_parc::ORPARC::createRacers(unsigned int seed)
 {
-    race_.createRacers([this](unsigned int, std::uint_fast32_t mixed) { return makeRacer(mixed); }, seed, pdef_);
+    race_.createRacers([this](unsigned int k, std::uint_fast32_t mixed) { return makeRacer(k, mixed); }, seed, pdef_);
 }
 
 std::shared_ptr<ompl_parc::PARC> ompl_parc::ORPARC::createInstance(unsigned int k, std::uint_fast32_t raceSeed)
 {
     if (!pdef_)
         throw ompl::Exception(getName(), "createInstance() needs the problem definition set first");
-    auto racer = makeRacer(mixSeed(raceSeed, k));
+    auto racer = makeRacer(k, mixSeed(raceSeed, k));
     racer->setName(getName() + "#" + std::to_string(k));
     racer->setProblemDefinition(pdef_);
     return racer;

@@ -19,7 +19,8 @@ namespace ompl_parc
         (shared, so every P-ARC parameter can be set by name; \e workers is W_k) plus \e instances (K) and
         \e total_workers (W, a multiple of K, sets W_k = W / K). The racers are created at setup() or the
         first solve() with the prototype's values (its \e profile first, then the others, so explicit
-        values win) and the seeds mixSeed(seed, k); a later solve() continues them, clear() discards them
+        values win) and the seeds mixSeed(seed, k), the odd ones with an eager repair schedule when \e diversify is on
+        (the default; setDiversify()); a later solve() continues them, clear() discards them
         so that the next solve() uses changed parameters.
 
         After a solve the reported instance is the winner or, if nobody won, the instance that went furthest
@@ -85,6 +86,11 @@ namespace ompl_parc
         /** \brief Sets W_k = total / K; throws ompl::Exception unless total is a positive multiple of K. */
         void setTotalWorkers(unsigned int total);
         unsigned int getTotalWorkers() const { return getInstances() * getWorkers(); }
+        /** \brief Whether the odd instances repair with ArcSettings::eager() (default on): identical instances differ
+            only by their seeds, and where the time goes to one hard team of arms, seeds barely change it; two
+            schedules do. Off: the paper's OR, every instance the prototype. */
+        void setDiversify(bool diversify) { diversify_ = diversify; }
+        bool getDiversify() const { return diversify_; }
         /** @} */
         /** \brief W_k, the prototype's \e workers. */
         void setWorkers(unsigned int workers) { prototype_->setWorkers(workers); }
@@ -106,8 +112,9 @@ namespace ompl_parc
       private:
         /** \brief The K racers, seeded from \e seed (as OrRace::createRacers()). */
         void createRacers(unsigned int seed);
-        /** \brief A racer like the prototype, with the instance seed \e seed. */
-        std::shared_ptr<PARC> makeRacer(std::uint_fast32_t seed);
+        /** \brief Racer \e k: like the prototype, with the instance seed \e seed, and the eager repair schedule for
+            odd \e k when diversifying. */
+        std::shared_ptr<PARC> makeRacer(unsigned int k, std::uint_fast32_t seed);
         /** \brief After a won race: smooth a copy of the winner's plan; keep it (and report it) if it is the first or
             better than the best so far by the objective. */
         void takeWinner(const ompl::base::PlannerTerminationCondition &ptc);
@@ -122,6 +129,7 @@ namespace ompl_parc
         OrRace race_;
         SmoothingStep smoothing_;
         std::string objective_{"first"};
+        bool diversify_{true};
         /** \brief The plan solve() returns when it is not the winner's own: smoothed, or the best of several rounds. */
         std::optional<MultiRobotPlan> result_;
         /** \brief The smoothing report of result_. */

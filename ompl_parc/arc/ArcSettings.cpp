@@ -4,6 +4,7 @@
 
 #include <ompl/util/Exception.h>
 
+#include <algorithm>
 #include <cmath>
 
 ompl_parc::ArcSettings ompl_parc::ArcSettings::profile(const std::string &name)
@@ -69,6 +70,15 @@ std::string ompl_parc::ArcSettings::profileFor(const MultiRobotSpaceInformation 
     if (any("planar_arm"))
         return "planar";
     return "mobile";
+}
+
+ompl_parc::ArcSettings ompl_parc::ArcSettings::eager() const
+{
+    ArcSettings s = *this;
+    if (s.sampleCap != 0)
+        s.sampleCap = std::max(1000u, s.sampleCap / 4);
+    s.minWindowGrowth = std::min(4., 2. * std::max(1., s.minWindowGrowth));
+    return s;
 }
 
 std::vector<std::string> ompl_parc::ArcSettings::profileNames()

@@ -110,6 +110,13 @@ namespace ompl_parc
             ompl::Exception for another name. */
         static ArcSettings profile(const std::string &name);
 
+        /** \brief These settings with an eager repair schedule: a quarter of the sample cap (at least 1000; none stays
+            none) and twice the minimum window growth (at most 4), so fewer samples on each window and fewer windows
+            before the team's global problem. For the odd instances of an OR race (ORPARC's \e diversify): on a team
+            of arms that no window can repair (Panda Cage 16 tasks 3 and 4), the default schedule spends seconds on
+            hopeless windows and an eager instance wins; where windows do repair, the default instance does. */
+        ArcSettings eager() const;
+
         /** \brief Half-width of the window for attempt \e k (0 = the first). */
         std::size_t halfWidth(unsigned int k) const;
 
