@@ -137,6 +137,37 @@ namespace
                                         static_cast<int>(tally.onlyFastRejected));
     }
 
+    void compare(const MultiRobotSpaceInformationPtr &si, const MultiRobotPlan &plan, Tally &tally);
+
+    /** \e plans plans of \e base's arms, each arm through \e waypoints configurations drawn within \e spread of its
+        start (in its bounds), checked both ways. */
+    Tally compareJitteredArms(const MultiRobotProblem &base, unsigned int seed, double spread, int waypoints, int plans)
+    {
+        const auto &si = base.getSpaceInformation();
+        std::mt19937 rng(seed);
+        std::uniform_real_distribution<double> perturb(-spread, spread);
+        Tally tally;
+        for (int k = 0; k < plans; ++k)
+        {
+            MultiRobotPlan plan(*si);
+            for (std::size_t i = 0; i < si->getRobotCount(); ++i)
+            {
+                const auto &limits = si->getRobot(i)->getBounds();
+                std::vector<std::vector<double>> path = {base.getStart(i)};
+                for (int w = 0; w < waypoints; ++w)
+                {
+                    std::vector<double> q = base.getStart(i);
+                    for (std::size_t d = 0; d < q.size(); ++d)
+                        q[d] = std::clamp(q[d] + perturb(rng), limits.low[d], limits.high[d]);
+                    path.push_back(q);
+                }
+                plan.setRobotPath(i, randomPath(path, si->getResolution(), rng));
+            }
+            compare(si, plan, tally);
+        }
+        return tally;
+    }
+
     /** Checks one plan both ways: whatever dense sampling rejects, the fast validator rejects, with every value
         of the substeps option (it sets the fewest samples, never whether instants between timesteps are checked). */
     void compare(const MultiRobotSpaceInformationPtr &si, const MultiRobotPlan &plan, Tally &tally)
@@ -207,30 +238,7 @@ TEST(ValidatorSoundness, NeverAcceptsWhatDenseSamplingRejectsForArms)
     // Two facing planar arms of Planar Cross at resolution 8 (an eighth of a radian per timestep), each through three
     // waypoints jittered around its start: self-collisions, wall hits and arm-arm conflicts at and between
     // timesteps.
-    const auto base = scenarios::createPlanarCross(2, 8.);
-    const auto &si = base.getSpaceInformation();
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<double> perturb(-0.7, 0.7);
-    Tally tally;
-    for (int k = 0; k < 60; ++k)
-    {
-        MultiRobotPlan plan(*si);
-        for (std::size_t i = 0; i < si->getRobotCount(); ++i)
-        {
-            const auto &limits = si->getRobot(i)->getBounds();
-            std::vector<std::vector<double>> waypoints = {base.getStart(i)};
-            for (int w = 0; w < 3; ++w)
-            {
-                std::vector<double> q = base.getStart(i);
-                for (std::size_t d = 0; d < q.size(); ++d)
-                    q[d] = std::clamp(q[d] + perturb(rng), limits.low[d], limits.high[d]);
-                waypoints.push_back(q);
-            }
-            plan.setRobotPath(i, randomPath(waypoints, si->getResolution(), rng));
-        }
-        compare(si, plan, tally);
-    }
-    expectBothOutcomes(tally, 10u);
+    expectBothOutcomes(compareJitteredArms(scenarios::createPlanarCross(2, 8.), 5, 0.7, 3, 60), 10u);
 }
 
 TEST(ValidatorSoundness, NeverAcceptsWhatDenseSamplingRejectsForPandas)
@@ -239,30 +247,7 @@ TEST(ValidatorSoundness, NeverAcceptsWhatDenseSamplingRejectsForPandas)
     // timesteps), each through two waypoints jittered around its start: hits of the cage and the table, self-collisions
     // and arm-arm contacts, at and between timesteps, where the fast validator skips intervals whose grown capsules
     // touch nothing.
-    const auto base = scenarios::createPandaCage(2, 0, 6.);
-    const auto &si = base.getSpaceInformation();
-    std::mt19937 rng(11);
-    std::uniform_real_distribution<double> perturb(-0.08, 0.08);
-    Tally tally;
-    for (int k = 0; k < 40; ++k)
-    {
-        MultiRobotPlan plan(*si);
-        for (std::size_t i = 0; i < si->getRobotCount(); ++i)
-        {
-            const auto &limits = si->getRobot(i)->getBounds();
-            std::vector<std::vector<double>> waypoints = {base.getStart(i)};
-            for (int w = 0; w < 2; ++w)
-            {
-                std::vector<double> q = base.getStart(i);
-                for (std::size_t d = 0; d < q.size(); ++d)
-                    q[d] = std::clamp(q[d] + perturb(rng), limits.low[d], limits.high[d]);
-                waypoints.push_back(q);
-            }
-            plan.setRobotPath(i, randomPath(waypoints, si->getResolution(), rng));
-        }
-        compare(si, plan, tally);
-    }
-    expectBothOutcomes(tally, 5u);
+    expectBothOutcomes(compareJitteredArms(scenarios::createPandaCage(2, 0, 6.), 11, 0.08, 2, 40), 5u);
 }
 
 TEST(ValidatorSoundness, DisplacementBoundsHoldForEveryRobotKind)
