@@ -8,12 +8,14 @@ std::uint64_t ompl_parc::BoxOverlaps::pack(std::uint64_t x, std::uint64_t y, std
     return (((x << axisBits_) | y) << axisBits_) | z;
 }
 
+std::uint64_t ompl_parc::BoxOverlaps::cellIndex(double coordinate, int axis) const
+{
+    return static_cast<std::uint64_t>(std::floor((coordinate - origin_[axis]) / cell_));
+}
+
 std::uint64_t ompl_parc::BoxOverlaps::cellOf(const std::array<double, 3> &point) const
 {
-    std::array<std::uint64_t, 3> c{};
-    for (int d = 0; d < 3; ++d)
-        c[d] = static_cast<std::uint64_t>(std::floor((point[d] - origin_[d]) / cell_));
-    return pack(c[0], c[1], c[2]);
+    return pack(cellIndex(point[0], 0), cellIndex(point[1], 1), cellIndex(point[2], 2));
 }
 
 bool ompl_parc::BoxOverlaps::cellRange(const AxisBox &box, std::array<std::uint64_t, 3> &first,
@@ -22,8 +24,8 @@ bool ompl_parc::BoxOverlaps::cellRange(const AxisBox &box, std::array<std::uint6
     std::uint64_t cells = 1;
     for (int d = 0; d < 3; ++d)
     {
-        first[d] = static_cast<std::uint64_t>(std::floor((box.lo[d] - origin_[d]) / cell_));
-        last[d] = static_cast<std::uint64_t>(std::floor((box.hi[d] - origin_[d]) / cell_));
+        first[d] = cellIndex(box.lo[d], d);
+        last[d] = cellIndex(box.hi[d], d);
         cells *= last[d] - first[d] + 1;
         if (cells > MAX_CELLS)
             return false;
@@ -39,11 +41,15 @@ void ompl_parc::BoxOverlaps::find(const AxisBox *boxes, const char *active, std:
         if ((active[i] || active[j]) && boxes[i].overlaps(boxes[j]))
             report(std::min(i, j), std::max(i, j));
     };
-    if (n < 16)  // a handful: every pair
+    const auto everyPair = [&]
     {
         for (std::size_t i = 0; i < n; ++i)
             for (std::size_t j = i + 1; j < n; ++j)
                 test(i, j);
+    };
+    if (n < 16)  // a handful: every pair
+    {
+        everyPair();
         return;
     }
     // The grid: its origin at the boxes' low corner, its cell twice their median extent, and coarser if the boxes
@@ -79,9 +85,7 @@ void ompl_parc::BoxOverlaps::find(const AxisBox *boxes, const char *active, std:
         cell_ = std::max(cell_, (top[d] - origin_[d]) / cellsPerAxis);
     if (!(cell_ > 0.) || !std::isfinite(cell_))  // points, or boxes the grid cannot place: every pair
     {
-        for (std::size_t i = 0; i < n; ++i)
-            for (std::size_t j = i + 1; j < n; ++j)
-                test(i, j);
+        everyPair();
         return;
     }
     entries_.clear();

@@ -46,6 +46,9 @@ namespace ompl_parc
         /** \brief Per box, its cell index range per axis; false if it covers more than MAX_CELLS cells. */
         bool cellRange(const AxisBox &box, std::array<std::uint64_t, 3> &first,
                        std::array<std::uint64_t, 3> &last) const;
+        /** \brief The cell of \e coordinate along \e axis: one formula for entering boxes and for the cell that
+            reports a pair, so that the intersection's corner always falls in a cell of both boxes. */
+        std::uint64_t cellIndex(double coordinate, int axis) const;
         std::uint64_t cellOf(const std::array<double, 3> &point) const;
         std::uint64_t pack(std::uint64_t x, std::uint64_t y, std::uint64_t z) const;
 

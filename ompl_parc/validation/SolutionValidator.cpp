@@ -205,11 +205,14 @@ namespace
             /** The grid of the robot-robot broad phase (its scratch reused block after block). */
             ompl_parc::BoxOverlaps overlaps;
             /** Scratch of mayTouch(): per capsule of the candidate's robots, its box over one interval, and whether
-                the narrow phase needs it; the growth of each capsule between timesteps, and at timesteps (the pad). */
+                the narrow phase needs it; the growth of each capsule between timesteps. */
             std::vector<Box> boxesA, boxesB;
             std::vector<char> maskA, maskB;
             ompl_parc::CollisionBody bodyA, bodyB;
-            std::vector<double> growA, growB, pad;
+            std::vector<double> growA, growB;
+            /** Scratch: the growth per capsule of the placement at hand (the pad at a timestep; for intervalClear(),
+                the interval's largest growth plus the whole step). */
+            std::vector<double> grow;
             std::size_t checked{0};
             std::optional<Event> best;
         };
@@ -451,10 +454,10 @@ namespace
             const auto place = [&](std::size_t robot, std::size_t piece, const ompl_parc::CollisionBody &body,
                                    const std::vector<double> &grow, const std::vector<char> &mask)
             {
-                worker.pad.resize(body.size());
+                worker.grow.resize(body.size());
                 for (std::size_t k = 0; k < body.size(); ++k)
-                    worker.pad[k] = std::max(pad_[robot], grow[k]) + capsuleSteps_[robot][piece][k];
-                worker.fcl.place(robot, body, options_.contactTolerance, worker.pad, mask);
+                    worker.grow[k] = std::max(pad_[robot], grow[k]) + capsuleSteps_[robot][piece][k];
+                worker.fcl.place(robot, body, options_.contactTolerance, worker.grow, mask);
                 ++worker.checked;
             };
             place(c.a, pa, worker.bodyA, worker.growA, worker.maskA);
@@ -598,8 +601,8 @@ namespace
                 motions_[robot].interpolate(piece, u, worker.q.data());
                 si_.getRobot(robot)->computeCapsules(worker.q.data(), worker.body);
                 if (!substep)
-                    worker.pad.assign(worker.body.size(), pad_[robot]);
-                worker.fcl.place(robot, worker.body, shrink, substep ? grow : worker.pad, mask);
+                    worker.grow.assign(worker.body.size(), pad_[robot]);
+                worker.fcl.place(robot, worker.body, shrink, substep ? grow : worker.grow, mask);
                 ++worker.checked;
             };
             place(c.a, pa, worker.growA, worker.maskA);
