@@ -9,6 +9,7 @@
 #include "ToolSupport.h"
 
 #include "ompl_parc/io/GeometryFile.h"
+#include "ompl_parc/io/HtmlWriter.h"
 #include "ompl_parc/io/SolutionFile.h"
 #include "ompl_parc/io/SvgWriter.h"
 #include "ompl_parc/planners/ArcPlannerBase.h"
@@ -201,8 +202,9 @@ int main(int argc, char **argv)
                 "out", po::value<std::string>(), "write the solution to this JSON file")(
                 "no-validate", "skip the independent validation of the solution (timing and memory runs)")(
                 "picture", po::value<std::string>(),
-                "draw the solution (or, unsolved, the problem) to this SVG file, animated")(
-                "picture-static", "make --picture a static snapshot: starts, goals and traced paths")(
+                "draw the solution (or, unsolved, the problem): an interactive 3D page for a .html name, else an "
+                "animated SVG")(
+                "picture-static", "make an SVG --picture a static snapshot: starts, goals and traced paths")(
                 "geometry", po::value<std::string>(),
                 "write the world-frame shapes of the problem and solution (JSON, for scripts/draw_panda_cage.py)")(
                 "verbose", "log the planner's stages (OMPL's INFO level)")(
@@ -276,12 +278,11 @@ int main(int argc, char **argv)
                 const char *only = plan == nullptr ? " (the problem only)" : "";
                 if (vm.count("picture"))
                 {
-                    SvgOptions picture;
-                    picture.animate = vm.count("picture-static") == 0;
-                    SvgWriter::write(vm["picture"].as<std::string>(), problem, plan, picture);
-                    std::cout << "picture    " << vm["picture"].as<std::string>() << only
-                              << (SvgWriter::isPlanar(problem) ? "" : std::string(" -- ") + SvgWriter::TOP_VIEW_NOTE)
-                              << std::endl;
+                    const std::string &path = vm["picture"].as<std::string>();
+                    tools::writePicture(path, problem, plan, vm.count("picture-static") == 0);
+                    const bool topView = !HtmlWriter::isPagePath(path) && !SvgWriter::isPlanar(problem);
+                    std::cout << "picture    " << path << only
+                              << (topView ? std::string(" -- ") + SvgWriter::TOP_VIEW_NOTE : "") << std::endl;
                 }
                 if (vm.count("geometry"))
                 {

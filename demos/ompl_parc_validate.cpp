@@ -28,6 +28,8 @@ int main(int argc, char **argv)
                                   "fewest samples per timestep interval (more where the motion needs them: every "
                                   "instant between timesteps is checked whatever this is)")(
                 "threads", po::value<std::string>()->default_value("0"), "threads of the check (0: one per core)")(
+                "picture", po::value<std::string>(),
+                "draw the plan, valid or not: an interactive 3D page for a .html name, else an animated SVG")(
                 "solution", po::value<std::string>(), "solution file");
             po::positional_options_description positional;
             positional.add("solution", 1);
@@ -49,6 +51,11 @@ int main(int argc, char **argv)
             const ompl::time::point checkStart = ompl::time::now();
             const ValidationReport report = SolutionValidator(problem, validation).validate(plan);
             const double checkTime = ompl::time::seconds(ompl::time::now() - checkStart);
+            if (vm.count("picture"))
+            {
+                tools::writePicture(vm["picture"].as<std::string>(), problem, &plan);
+                std::cout << "picture: " << vm["picture"].as<std::string>() << std::endl;
+            }
             if (!report.valid)
             {
                 std::cout << "invalid: " << report.message << std::endl;

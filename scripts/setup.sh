@@ -14,7 +14,7 @@ PACKAGES=(
     libompl-dev libfcl-dev libccd-dev liburdfdom-dev libtinyxml-dev libeigen3-dev libxsimd-dev
     libboost-dev libboost-program-options-dev libboost-serialization-dev
     libboost-filesystem-dev libboost-system-dev
-    nlohmann-json3-dev
+    nlohmann-json3-dev libjs-three
 )
 # ... and what the tests, benchmarks, Python module, MPI tool, sanitizers and API docs add.
 if [ "${1:-}" != "--demo" ]; then
@@ -24,6 +24,7 @@ if [ "${1:-}" != "--demo" ]; then
         pybind11-dev python3-dev python3-numpy python3-pytest
         libopenmpi-dev openmpi-bin
         clang libclang-rt-dev
+        chromium python3-pil
     )
 fi
 

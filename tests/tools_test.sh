@@ -30,6 +30,15 @@ expect 0 "profile mobile$" "$bin/ompl_parc_demo" --scenario panda_cage --robots 
 expect 0 "validated  yes" "$bin/ompl_parc_demo" --scenario mobile_cross --robots 4 --seed 3 --out "$tmp/sol.json"
 expect 0 "^valid: 4 robots" "$bin/ompl_parc_validate" --scenario mobile_cross --robots 4 "$tmp/sol.json"
 expect 2 "robots' has 4 entries" "$bin/ompl_parc_validate" --scenario mobile_cross --robots 8 "$tmp/sol.json"
+# The plan drawn by the validate tool and by the demo as a 3D page; an unwritable page is a one-line error.
+expect 0 "^picture: $tmp/sol.html" "$bin/ompl_parc_validate" --scenario mobile_cross --robots 4 "$tmp/sol.json" \
+    --picture "$tmp/sol.html"
+expect 0 "<!DOCTYPE html>" head -c 20 "$tmp/sol.html"
+expect 2 "cannot write '$tmp/none/sol.html'" "$bin/ompl_parc_validate" --scenario mobile_cross --robots 4 \
+    "$tmp/sol.json" --picture "$tmp/none/sol.html"
+expect 2 "cannot write '$tmp/none/p.html'" "$bin/ompl_parc_demo" --scenario mobile_cross --robots 4 \
+    --picture "$tmp/none/p.html"
+expect 0 "^picture    $tmp/cage.html$" "$bin/ompl_parc_demo" --scenario panda_cage --robots 2 --picture "$tmp/cage.html"
 
 # A tampered solution: robot r1 made to wait at its start (its start no longer clear of r0's path).
 jump=$(python3 - "$tmp/sol.json" "$tmp/bad.json" <<'PY'

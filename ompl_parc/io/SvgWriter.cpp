@@ -339,7 +339,7 @@ namespace
 }  // namespace
 
 const char *const ompl_parc::SvgWriter::TOP_VIEW_NOTE =
-    "3D problem: top view only (z dropped). For 3D, write --geometry and draw it with scripts/draw_panda_cage.py";
+    "3D problem: top view only (z dropped). For 3D, name the picture .html: an interactive 3D page";
 
 bool ompl_parc::SvgWriter::isPlanar(const MultiRobotProblem &problem)
 {

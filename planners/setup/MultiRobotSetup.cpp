@@ -1,5 +1,6 @@
 #include "ompl_parc/planners/setup/MultiRobotSetup.h"
 
+#include "ompl_parc/io/HtmlWriter.h"
 #include "ompl_parc/io/SolutionFile.h"
 #include "ompl_parc/planners/setup/PlannerRegistry.h"
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
@@ -181,5 +182,8 @@ void ompl_parc::MultiRobotSetup::writeSolution(const std::string &path) const
 
 void ompl_parc::MultiRobotSetup::writePicture(const std::string &path, const SvgOptions &options) const
 {
-    SvgWriter::write(path, getProblem(), plan_ ? &*plan_ : nullptr, options);
+    if (HtmlWriter::isPagePath(path))
+        HtmlWriter::write(path, getProblem(), plan_ ? &*plan_ : nullptr);
+    else
+        SvgWriter::write(path, getProblem(), plan_ ? &*plan_ : nullptr, options);
 }

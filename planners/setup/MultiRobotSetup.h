@@ -116,7 +116,8 @@ namespace ompl_parc
         ValidationReport validate(const ValidationOptions &options = ValidationOptions()) const;
         /** \brief Writes the solution file (SolutionFile). */
         void writeSolution(const std::string &path) const;
-        /** \brief Draws the problem and, if solved, the solution (SvgWriter). */
+        /** \brief Draws the problem and, if solved, the solution: an interactive 3D page (HtmlWriter) for a .html
+            \e path, else an SVG (SvgWriter, with \e options). */
         void writePicture(const std::string &path, const SvgOptions &options = SvgOptions()) const;
 
       private:

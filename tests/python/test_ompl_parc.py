@@ -110,6 +110,11 @@ def test_scenario_and_solution_files_round_trip(tmp_path):
     assert ompl_parc.validate(loaded, read).valid
     ompl_parc.write_svg(str(tmp_path / "team.svg"), loaded, read)
     assert (tmp_path / "team.svg").read_text().startswith("<?xml")
+    ompl_parc.write_html(str(tmp_path / "team.html"), loaded, read)
+    page = (tmp_path / "team.html").read_text()
+    assert page.startswith("<!DOCTYPE html>") and '"robots":[{' in page
+    with pytest.raises(Exception, match="cannot write"):
+        ompl_parc.write_html(str(tmp_path / "missing" / "team.html"), loaded, read)
 
 
 def test_a_plan_of_another_team_is_not_written(tmp_path):

@@ -7,6 +7,7 @@
 #include "ompl_parc/Version.h"
 #include "ompl_parc/io/ScenarioFile.h"
 #include "ompl_parc/io/SolutionFile.h"
+#include "ompl_parc/io/HtmlWriter.h"
 #include "ompl_parc/io/SvgWriter.h"
 #include "ompl_parc/planners/setup/PlannerRegistry.h"
 #include "ompl_parc/scenarios/Scenarios.h"
@@ -196,5 +197,10 @@ PYBIND11_MODULE(_ompl_parc, m)
             SvgWriter::write(path, problem, plan, options);
         },
         py::arg("path"), py::arg("problem"), py::arg("plan") = nullptr, py::arg("animate") = true);
+    m.def(
+        "write_html",
+        [](const std::string &path, const MultiRobotProblem &problem, const MultiRobotPlan *plan)
+        { HtmlWriter::write(path, problem, plan); },
+        py::arg("path"), py::arg("problem"), py::arg("plan") = nullptr);
     m.def("run_benchmark", &python::runBenchmark, py::arg("path"), py::arg("verbose") = false);
 }

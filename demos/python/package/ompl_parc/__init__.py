@@ -18,13 +18,13 @@ import warnings as _warnings
 from typing import Any, Dict, List, Optional, Sequence
 
 from ._ompl_parc import OMPL_VERSION, Plan, Problem, SolveResult, Validation, __version__
-from ._ompl_parc import planner_names, planner_parameters, read_solution, scenario_names, write_solution, write_svg
+from ._ompl_parc import planner_names, planner_parameters, read_solution, scenario_names, write_html, write_solution, write_svg
 from . import _ompl_parc
 
 __all__ = ["OMPL_VERSION", "Plan", "Problem", "SolveResult", "Validation", "__version__", "box", "box2d",
            "cylinder", "disc", "load", "planar_arm", "planner_names", "planner_parameters", "read_solution", "run_benchmark", "scenario",
            "scenario_names", "set_log_level", "solve", "sphere", "team", "urdf_arm", "validate", "write_solution",
-           "write_svg"]
+           "write_html", "write_svg"]
 
 
 def scenario(name: str, robots: int, task: int = 0, resolution: float = 128.0) -> Problem:
