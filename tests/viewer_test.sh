@@ -2,7 +2,7 @@
 # The 3D plan viewer in a real browser: pages written by the demo for a disc plan and a Panda Cage 8 plan are opened
 # in headless Chromium with no network (a namespace without interfaces where the machine allows one, and no proxy),
 # and must load without a JavaScript error, draw robot-coloured pixels, and draw the robots elsewhere when the time
-# changes; each page must stay under 2 MB and load nothing from outside. Writes the Panda page's screenshot to
+# slider is moved (the page's "#t=" moves it and sends it an input event, as a drag does); each page must stay under 2 MB and load nothing from outside. Writes the Panda page's screenshot to
 # OUT_DIR/viewer_panda_cage_8.png (the README's picture).
 # Usage: viewer_test.sh BIN_DIR CHROMIUM OUT_DIR
 set -u
@@ -50,11 +50,11 @@ import sys
 from PIL import Image, ImageChops
 first, second = (Image.open(p).convert("RGB") for p in sys.argv[1:3])
 # Robots are drawn in saturated palette colours; the background, the obstacles and the panel are grey or white.
-# The panel (top left, 300 x 400) and the bar (bottom) hold coloured swatches and controls: left out.
+# The panel (left, 300 wide) and the bar (bottom) hold coloured swatches and controls: left out.
 def robot_pixels(image):
     w, h = image.size
     return sum(1 for y in range(0, h - 60, 2) for x in range(0, w, 2)
-               if not (x < 300 and y < 420) and max(image.getpixel((x, y))) - min(image.getpixel((x, y))) > 90)
+               if x >= 300 and max(image.getpixel((x, y))) - min(image.getpixel((x, y))) > 90)
 counts = [robot_pixels(first), robot_pixels(second)]
 box = ImageChops.difference(first.crop((300, 0, first.width, first.height - 60)),
                             second.crop((300, 0, second.width, second.height - 60))).getbbox()
