@@ -211,6 +211,9 @@ int main(int argc, char **argv)
                 "debug", "log every conflict and repair, and the inner planners' messages too (OMPL's DEBUG level)")(
                 "quiet", "no live progress line and no log but errors");
             const auto vm = tools::parse(argc, argv, options);
+            if (vm.count("picture-static") && vm.count("picture") &&
+                HtmlWriter::isPagePath(vm["picture"].as<std::string>()))
+                throw std::invalid_argument("--picture-static applies to SVG pictures, not to the 3D page");
             if (vm.count("verbose") + vm.count("debug") + vm.count("quiet") > 1)
                 throw std::invalid_argument("give one of --verbose, --debug and --quiet");
             ompl::msg::setLogLevel(vm.count("debug")     ? ompl::msg::LOG_DEBUG

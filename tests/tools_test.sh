@@ -39,6 +39,8 @@ expect 2 "cannot write '$tmp/none/sol.html'" "$bin/ompl_parc_validate" --scenari
 expect 2 "cannot write '$tmp/none/p.html'" "$bin/ompl_parc_demo" --scenario mobile_cross --robots 4 \
     --picture "$tmp/none/p.html"
 expect 0 "^picture    $tmp/cage.html$" "$bin/ompl_parc_demo" --scenario panda_cage --robots 2 --picture "$tmp/cage.html"
+expect 2 "picture-static applies to SVG pictures" "$bin/ompl_parc_demo" --scenario panda_cage --robots 2 \
+    --picture "$tmp/cage.html" --picture-static
 
 # A tampered solution: robot r1 made to wait at its start (its start no longer clear of r0's path).
 jump=$(python3 - "$tmp/sol.json" "$tmp/bad.json" <<'PY'
