@@ -233,11 +233,15 @@ std::string ompl_parc::HtmlWriter::toHtml(const MultiRobotProblem &problem, cons
     if (plan != nullptr)
         for (const auto &c :
              ClosestApproaches::find(si, *plan, plan->sampleTimesteps(options.approachSamples), options.closest))
+        {
+            json points = c.points;
+            roundNumbers(points);
+            // The clearance unrounded: tight plans pass at fractions of a millimetre.
             closest.push_back({{"robots", {c.first, c.second}},
-                               {"time", static_cast<double>(c.timestep) / resolution},
+                               {"time", rounded(static_cast<double>(c.timestep) / resolution)},
                                {"clearance", c.clearance},
-                               {"points", c.points}});
-    roundNumbers(closest);
+                               {"points", points}});
+        }
     const json scene = {{"name", problem.getName()},
                         {"planar", SvgWriter::isPlanar(problem)},
                         {"thinnest", std::isfinite(thinnest) ? thinnest : 0.1},
