@@ -254,6 +254,7 @@ bool ompl_parc::PlanSmoother::tryTeamReplan(MultiRobotPlan &plan, const ob::Plan
         plan.getConfig(i, plan.getArrival(i), whole.goals.back().data());
     }
     whole.windowEnd = plan.getMakespan();
+    whole.sampleCap = TEAM_REPLAN_SAMPLES;
     Patch patch;
     const auto seed = static_cast<std::uint_fast32_t>(rng_.uniformInt(1, std::numeric_limits<int>::max()));
     const bool solved = replanner_->resume(*si_, whole, ptc, seed, patch, teamReplanMemory_);

@@ -100,6 +100,10 @@ namespace ompl_parc
         static constexpr std::size_t REPLAN_PERIOD = 16;
         /** \brief The replanner's iteration cap per replan. */
         static constexpr unsigned int REPLAN_SAMPLES = 1000;
+        /** \brief The team replan's iteration cap per robot (where the lattice has no path and ST-RRT plans it): as in
+            PP-ST-RRT's rounds, a robot the order walls in then fails soon and is promoted to the front of another
+            order, instead of holding the whole budget in one uncapped search. */
+        static constexpr unsigned int TEAM_REPLAN_SAMPLES = 5000;
 
         /** \brief Attempts in a row without gain after which smooth() stops: 200 per robot, at least 2000. */
         std::size_t getStallLimit() const;
