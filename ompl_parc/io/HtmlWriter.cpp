@@ -15,7 +15,6 @@
 #include <array>
 #include <cctype>
 #include <cmath>
-#include <cstring>
 #include <fstream>
 #include <limits>
 #include <queue>
