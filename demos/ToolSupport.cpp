@@ -1,9 +1,7 @@
 #include "ToolSupport.h"
 
 #include "ompl_parc/Version.h"
-#include "ompl_parc/io/HtmlWriter.h"
 #include "ompl_parc/io/ScenarioFile.h"
-#include "ompl_parc/io/SvgWriter.h"
 #include "ompl_parc/model/TeamLimit.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 #include "ompl_parc/util/NameList.h"
@@ -112,17 +110,4 @@ int ompl_parc::tools::runTool(const std::string &tool, const std::function<int()
         printError(tool, e.what());
         return EXIT_BAD_INPUT;
     }
-}
-
-void ompl_parc::tools::writePicture(const std::string &path, const MultiRobotProblem &problem,
-                                   const MultiRobotPlan *plan, bool animate)
-{
-    if (HtmlWriter::isPagePath(path))
-    {
-        HtmlWriter::write(path, problem, plan);
-        return;
-    }
-    SvgOptions options;
-    options.animate = animate;
-    SvgWriter::write(path, problem, plan, options);
 }

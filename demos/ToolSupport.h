@@ -1,7 +1,6 @@
 #ifndef OMPL_PARC_DEMOS_TOOL_SUPPORT_
 #define OMPL_PARC_DEMOS_TOOL_SUPPORT_
 
-#include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/model/MultiRobotProblem.h"
 
 #include <boost/program_options.hpp>
@@ -50,11 +49,6 @@ namespace ompl_parc::tools
         streams land in one file (a terminal, `2>&1`, mpirun forwarding each separately) the line never comes out
         split by, or into, the tool's other output. */
     void printError(const std::string &tool, const std::string &message);
-
-    /** \brief Draw \e problem and \e plan (none: the problem only) to \e path: an interactive 3D page
-        (HtmlWriter) for a .html name, else an SVG (SvgWriter; \e animate or a static snapshot). */
-    void writePicture(const std::string &path, const MultiRobotProblem &problem, const MultiRobotPlan *plan,
-                      bool animate = true);
 
     /** \brief Runs \e body, turning any exception into a one-line "tool: reason" on stderr and exit code 2
         (after --help or --version: exit code 0). */

@@ -10,6 +10,7 @@
 
 #include "ompl_parc/io/GeometryFile.h"
 #include "ompl_parc/io/HtmlWriter.h"
+#include "ompl_parc/io/PictureFile.h"
 #include "ompl_parc/io/SolutionFile.h"
 #include "ompl_parc/io/SvgWriter.h"
 #include "ompl_parc/planners/ArcPlannerBase.h"
@@ -282,7 +283,9 @@ int main(int argc, char **argv)
                 if (vm.count("picture"))
                 {
                     const std::string &path = vm["picture"].as<std::string>();
-                    tools::writePicture(path, problem, plan, vm.count("picture-static") == 0);
+                    SvgOptions svg;
+                    svg.animate = vm.count("picture-static") == 0;
+                    PictureFile::write(path, problem, plan, svg);
                     const bool topView = !HtmlWriter::isPagePath(path) && !SvgWriter::isPlanar(problem);
                     std::cout << "picture    " << path << only
                               << (topView ? std::string(" -- ") + SvgWriter::TOP_VIEW_NOTE : "") << std::endl;

@@ -5,6 +5,7 @@
 #include "Interruption.h"
 #include "ToolSupport.h"
 
+#include "ompl_parc/io/PictureFile.h"
 #include "ompl_parc/io/SolutionFile.h"
 #include "ompl_parc/util/ParseNumber.h"
 #include "ompl_parc/validation/SolutionValidator.h"
@@ -53,7 +54,7 @@ int main(int argc, char **argv)
             const double checkTime = ompl::time::seconds(ompl::time::now() - checkStart);
             if (vm.count("picture"))
             {
-                tools::writePicture(vm["picture"].as<std::string>(), problem, &plan);
+                PictureFile::write(vm["picture"].as<std::string>(), problem, &plan);
                 std::cout << "picture: " << vm["picture"].as<std::string>() << std::endl;
             }
             if (!report.valid)

@@ -60,10 +60,10 @@ namespace ompl_parc
         hull of its bodies at the ends of each piece, for an arm its bodies at the timesteps grown by half a
         timestep's DisplacementBound). Only pairs and obstacles whose boxes overlap in a block are tested (the pairs
         found by a uniform grid, BoxOverlaps), and only when one of them moves there. A disc on a piece is tested whole:
-       its swept capsule against an obstacle, the closest approach of two discs' linear relative motion against the sum
-       of radii. The rest goes timestep by timestep. Per interval [t, t + 1], each capsule gets a box around it at t and
-       t + 1 grown by half its own displacement bound of a step (DisplacementBound::capsuleBound()); only the capsules
-        whose boxes meet the other side's are tested further. Then one FCL test of those capsules at t, each grown
+        its swept capsule against an obstacle, the closest approach of two discs' linear relative motion against the
+        sum of radii. The rest goes timestep by timestep. Per interval [t, t + 1], each capsule gets a box around it at
+        t and t + 1 grown by half its own displacement bound of a step (DisplacementBound::capsuleBound()); only the
+        capsules whose boxes meet the other side's are tested further. Then one FCL test of those capsules at t, each grown
         by its displacement over the whole step (with the largest radius any sample uses): every sample of the
         interval lies inside, so if nothing touches, the interval is clear. Otherwise FCL at the timestep, and
         between timesteps FCL at m samples with radii grown by each capsule's displacement to the nearest sample

@@ -1,6 +1,6 @@
 #include "ompl_parc/planners/setup/MultiRobotSetup.h"
 
-#include "ompl_parc/io/HtmlWriter.h"
+#include "ompl_parc/io/PictureFile.h"
 #include "ompl_parc/io/SolutionFile.h"
 #include "ompl_parc/planners/setup/PlannerRegistry.h"
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
@@ -182,8 +182,5 @@ void ompl_parc::MultiRobotSetup::writeSolution(const std::string &path) const
 
 void ompl_parc::MultiRobotSetup::writePicture(const std::string &path, const SvgOptions &options) const
 {
-    if (HtmlWriter::isPagePath(path))
-        HtmlWriter::write(path, getProblem(), plan_ ? &*plan_ : nullptr);
-    else
-        SvgWriter::write(path, getProblem(), plan_ ? &*plan_ : nullptr, options);
+    PictureFile::write(path, getProblem(), plan_ ? &*plan_ : nullptr, options);
 }

@@ -116,8 +116,8 @@ namespace ompl_parc
         ValidationReport validate(const ValidationOptions &options = ValidationOptions()) const;
         /** \brief Writes the solution file (SolutionFile). */
         void writeSolution(const std::string &path) const;
-        /** \brief Draws the problem and, if solved, the solution: an interactive 3D page (HtmlWriter) for a .html
-            \e path, else an SVG (SvgWriter, with \e options). */
+        /** \brief Draws the problem and, if solved, the solution (PictureFile): an interactive 3D page for a .html
+            \e path, else an SVG (with \e options). */
         void writePicture(const std::string &path, const SvgOptions &options = SvgOptions()) const;
 
       private:
