@@ -12,6 +12,7 @@
 #include "ompl_parc/io/HtmlWriter.h"
 #include "ompl_parc/io/PictureFile.h"
 #include "ompl_parc/io/SolutionFile.h"
+#include "ompl_parc/io/TrajectoryFile.h"
 #include "ompl_parc/io/SvgWriter.h"
 #include "ompl_parc/planners/ArcPlannerBase.h"
 #include "ompl_parc/planners/ORPARC.h"
@@ -201,6 +202,9 @@ int main(int argc, char **argv)
                 "smooth", po::value<std::string>()->default_value("1"),
                 "seconds of time-aware shortcutting after the solution (the planner's 'smooth' parameter); 0: off")(
                 "out", po::value<std::string>(), "write the solution to this JSON file")(
+                "trajectory", po::value<std::string>(),
+                "write trajectories within the robots' velocity and acceleration limits (JointTrajectory fields) and "
+                "the temporal plan graph to this JSON file (see ompl_parc_execute)")(
                 "no-validate", "skip the independent validation of the solution (timing and memory runs)")(
                 "picture", po::value<std::string>(),
                 "draw the solution (or, unsolved, the problem): an interactive 3D page for a .html name, else an "
@@ -335,6 +339,13 @@ int main(int argc, char **argv)
             {
                 SolutionFile::write(vm["out"].as<std::string>(), plan, *si);
                 std::cout << "solution   " << vm["out"].as<std::string>() << std::endl;
+            }
+            if (vm.count("trajectory") && report.valid)
+            {
+                const auto doc = TrajectoryFile::fromPlan(problem, plan);
+                TrajectoryFile::write(vm["trajectory"].as<std::string>(), doc);
+                std::cout << "trajectory " << vm["trajectory"].as<std::string>() << " (" << std::setprecision(2)
+                          << doc.at("duration").get<double>() << " s within the robots' limits)" << std::endl;
             }
             writePictures(&plan);
             return exitCode(report.valid || !validate ? tools::EXIT_SOLVED : tools::EXIT_FAILED);

@@ -280,6 +280,16 @@ namespace
         }
         else
             fail("robot '" + robot.getName() + "' of kind '" + robot.getKind() + "' cannot be written");
+        if (robot.hasOwnMotionLimits())
+        {
+            ordered_json velocity = ordered_json::array(), acceleration = ordered_json::array();
+            for (const auto &group : robot.getMotionLimits().groups)
+            {
+                velocity.push_back(group.velocity);
+                acceleration.push_back(group.acceleration);
+            }
+            out["limits"] = {{"velocity", velocity}, {"acceleration", acceleration}};
+        }
         return out;
     }
 
@@ -312,6 +322,29 @@ namespace
     }
 
     /** The robot described by \e value; its start and goal go to \e start and \e goal. */
+    /** A robot's "limits": {"velocity": V, "acceleration": A}, each a number for every group of \e defaults or a
+        list of one per group (per joint for an arm, one for a disc's speed); a missing one keeps the default. */
+    ompl_parc::MotionLimits limitsFromJson(const json &value, ompl_parc::MotionLimits defaults, const std::string &where)
+    {
+        requireObject(value, where);
+        allowOnly(value, {"velocity", "acceleration"}, where);
+        const std::size_t groups = defaults.groups.size();
+        for (const char *key : {"velocity", "acceleration"})
+        {
+            if (!value.contains(key))
+                continue;
+            const std::string at = where + "." + key;
+            const std::vector<double> limits = value.at(key).is_number()
+                                                   ? std::vector<double>(groups, number(value.at(key), at, true))
+                                                   : numbers(value.at(key), at, groups);
+            requirePositive(limits, at);
+            for (std::size_t g = 0; g < groups; ++g)
+                (std::string(key) == "velocity" ? defaults.groups[g].velocity : defaults.groups[g].acceleration) =
+                    limits[g];
+        }
+        return defaults;
+    }
+
     ompl_parc::RobotPtr robotFromJson(const json &value, const std::string &where,
                                       const ompl_parc::EnvironmentPtr &environment, const std::string &folder,
                                       std::vector<double> &start, std::vector<double> &goal)
@@ -322,14 +355,15 @@ namespace
         ompl_parc::RobotPtr robot;
         if (kind == "disc")
         {
-            allowOnly(value, {"name", "kind", "radius", "bounds", "start", "goal"}, where);
+            allowOnly(value, {"name", "kind", "radius", "bounds", "limits", "start", "goal"}, where);
             const double radius = number(field(value, "radius", where), where + ".radius", true);
             robot = std::make_shared<ompl_parc::DiscRobot>(name, environment, radius,
                                                            bounds(field(value, "bounds", where), where + ".bounds", 2));
         }
         else if (kind == "planar_arm")
         {
-            allowOnly(value, {"name", "kind", "base", "link_lengths", "link_width", "joint_limits", "start", "goal"},
+            allowOnly(value,
+                      {"name", "kind", "base", "link_lengths", "link_width", "joint_limits", "limits", "start", "goal"},
                       where);
             const json &base = field(value, "base", where);
             requireObject(base, where + ".base");
@@ -348,7 +382,7 @@ namespace
             // The URDF, the chain's end links, and the base pose ("base_pose": position and orientation).
             allowOnly(value,
                       {"name", "kind", "urdf", "builtin_urdf", "urdf_file", "base_link", "tip_link", "base_pose",
-                       "start", "goal"},
+                       "limits", "start", "goal"},
                       where);
             const std::string xml = urdfFromJson(value, where, folder);
             Eigen::Isometry3d base = Eigen::Isometry3d::Identity();
@@ -364,6 +398,8 @@ namespace
         }
         else
             fail(where + ".kind must be one of disc, planar_arm, urdf_arm (got '" + kind + "')");
+        if (value.contains("limits"))
+            robot->setMotionLimits(limitsFromJson(value.at("limits"), robot->getMotionLimits(), where + ".limits"));
         start = numbers(field(value, "start", where), where + ".start", robot->getDimension());
         goal = numbers(field(value, "goal", where), where + ".goal", robot->getDimension());
         return robot;

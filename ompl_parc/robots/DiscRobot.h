@@ -28,6 +28,13 @@ namespace ompl_parc
 
         double getRadius() const { return radius_; }
 
+        /** \brief "x", "y". */
+        std::vector<std::string> getCoordinateNames() const override { return {"x", "y"}; }
+
+      protected:
+        /** \brief A speed of 1 unit/s and an acceleration of 2 units/s^2 in any direction (one group). */
+        MotionLimits defaultMotionLimits() const override { return MotionLimits{{{0u, 2u, 1., 2.}}}; }
+
       private:
         double radius_;
     };

@@ -145,6 +145,27 @@ void ompl_parc::Robot::configToState(const double *q, ob::State *state) const
     std::copy(q, q + dimension_, state->as<ob::RealVectorStateSpace::StateType>()->values);
 }
 
+void ompl_parc::Robot::setMotionLimits(MotionLimits limits)
+{
+    const std::string problem = limits.check(dimension_);
+    if (!problem.empty())
+        throw ompl::Exception("robot '" + name_ + "': motion limits: " + problem);
+    motionLimits_ = std::move(limits);
+}
+
+ompl_parc::MotionLimits ompl_parc::Robot::defaultMotionLimits() const
+{
+    return MotionLimits::perCoordinate(std::vector<double>(dimension_, 1.), std::vector<double>(dimension_, 3.));
+}
+
+std::vector<std::string> ompl_parc::Robot::getCoordinateNames() const
+{
+    std::vector<std::string> names;
+    for (unsigned int k = 0; k < dimension_; ++k)
+        names.push_back("q" + std::to_string(k));
+    return names;
+}
+
 std::string ompl_parc::Robot::toString(Validity validity)
 {
     switch (validity)

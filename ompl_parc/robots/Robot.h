@@ -3,6 +3,7 @@
 
 #include "ompl_parc/collision/CollisionBody.h"
 #include "ompl_parc/collision/Environment.h"
+#include "ompl_parc/robots/MotionLimits.h"
 
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/spaces/RealVectorBounds.h>
@@ -119,7 +120,23 @@ namespace ompl_parc
 
         static std::string toString(Validity validity);
 
+        /** \brief The velocity and acceleration limits a trajectory of this robot must respect
+            (TimeParameterization): the ones set (setMotionLimits(), a scenario file's "limits"), else the kind's
+            defaults (defaultMotionLimits()). */
+        MotionLimits getMotionLimits() const { return motionLimits_ ? *motionLimits_ : defaultMotionLimits(); }
+        /** \brief True if limits were set rather than taken from the kind's defaults (scenario files write them). */
+        bool hasOwnMotionLimits() const { return motionLimits_.has_value(); }
+        /** \brief Throws ompl::Exception naming the robot if \e limits do not fit it (MotionLimits::check()). */
+        void setMotionLimits(MotionLimits limits);
+
+        /** \brief A name per configuration coordinate, for trajectory files (a JointTrajectory's joint names):
+            "q0", "q1", ... unless the kind knows better (a URDF arm's joint names, a disc's "x", "y"). */
+        virtual std::vector<std::string> getCoordinateNames() const;
+
       protected:
+        /** \brief The kind's limits when none are set: 1 unit/s and 3 units/s^2 per coordinate. */
+        virtual MotionLimits defaultMotionLimits() const;
+
         std::vector<std::pair<std::size_t, std::size_t>> selfCollisionPairs_;
 
       private:
@@ -128,6 +145,7 @@ namespace ompl_parc
         ompl::base::RealVectorBounds bounds_;
         unsigned int dimension_;
         ompl::base::SpaceInformationPtr si_;
+        std::optional<MotionLimits> motionLimits_;
     };
 
     using RobotPtr = std::shared_ptr<Robot>;

@@ -363,6 +363,9 @@ ompl_parc::UrdfArm::Chain ompl_parc::UrdfArm::parseChain(const std::string &urdf
             chain.offsets.push_back(pending);
             chain.axes.push_back(axis.normalized());
             chain.names.push_back(joint->name);
+            const bool hasVelocity = joint->limits && std::isfinite(joint->limits->velocity) &&
+                                     joint->limits->velocity > 0.;
+            chain.velocities.push_back(hasVelocity ? joint->limits->velocity : 1.);
             pending.setIdentity();
         }
         linkPoses.emplace_back(chain.offsets.size(), pending);
@@ -400,6 +403,7 @@ ompl_parc::UrdfArm::UrdfArm(std::string name, EnvironmentPtr environment, Chain 
                             const Eigen::Isometry3d &basePose)
     : Robot(std::move(name), std::move(environment), chain.limits),
       basePose_(basePose),
+      velocities_(std::move(chain.velocities)),
       jointNames_(std::move(chain.names)),
       tipOffset_(chain.tipOffset),
       primitives_(std::move(chain.primitives))
@@ -613,4 +617,12 @@ bool ompl_parc::UrdfArm::solvePositionIk(const Eigen::Vector3d &target, std::mt1
         }
     }
     return false;
+}
+
+ompl_parc::MotionLimits ompl_parc::UrdfArm::defaultMotionLimits() const
+{
+    std::vector<double> acceleration;
+    for (double velocity : velocities_)
+        acceleration.push_back(3. * velocity);
+    return MotionLimits::perCoordinate(velocities_, acceleration);
 }

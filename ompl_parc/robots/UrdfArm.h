@@ -84,6 +84,13 @@ namespace ompl_parc
         const Eigen::Isometry3d &getTipOffset() const { return tipOffset_; }
         /** \brief Names of the movable joints, base to tip. */
         const std::vector<std::string> &getJointNames() const { return jointNames_; }
+        std::vector<std::string> getCoordinateNames() const override { return jointNames_; }
+
+      protected:
+        /** \brief Per joint, the URDF's `<limit velocity=...>` (1 rad/s where it gives none) and three times that
+            per second as the acceleration (URDF has no acceleration limit; for the Panda this stays below every
+            joint's limit in Franka's data sheet). */
+        MotionLimits defaultMotionLimits() const override;
 
       private:
         /** \brief A capsule of a primitive, in its chain link's aligned frame. */
@@ -102,6 +109,7 @@ namespace ompl_parc
             std::vector<Eigen::Isometry3d> offsets;
             std::vector<Eigen::Vector3d> axes;
             std::vector<std::string> names;
+            std::vector<double> velocities;
             Eigen::Isometry3d tipOffset{Eigen::Isometry3d::Identity()};
             std::vector<Primitive> primitives;
         };
@@ -128,6 +136,7 @@ namespace ompl_parc
         void checkFixedLinks(const CollisionBody &body) const;
 
         Eigen::Isometry3d basePose_;
+        std::vector<double> velocities_;
         std::string urdfXml_, baseLink_, tipLink_;
         /** \brief Per movable joint k, the offset from aligned frame k-1 to aligned frame k at q_k = 0. */
         std::vector<Eigen::Matrix3d> offsetRotations_;

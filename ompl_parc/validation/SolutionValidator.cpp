@@ -791,6 +791,7 @@ ompl_parc::ValidationReport ompl_parc::SolutionValidator::validate(const MultiRo
                 std::sqrt(d2) / static_cast<double>(motions[i].getEndTime(p) - motions[i].getStartTime(p));
             if (step > maxStep)
             {
+                report.time = static_cast<double>(motions[i].getStartTime(p));
                 report.message = "t=" + std::to_string(motions[i].getStartTime(p)) + ": robot '" +
                                  si.getRobot(i)->getName() + "' moves " + std::to_string(step) +
                                  " in one timestep (limit " + std::to_string(1. / plan.getResolution()) + ")";
@@ -805,7 +806,10 @@ ompl_parc::ValidationReport ompl_parc::SolutionValidator::validate(const MultiRo
     if (collision && (!first || *collision < *first))
         first = collision;
     if (first)
+    {
         report.message = describe(si, *first);
+        report.time = first->time;
+    }
     report.valid = !first;
     return report;
 }

@@ -5,6 +5,7 @@
 #include "ompl_parc/model/MultiRobotProblem.h"
 #include "ompl_parc/validation/DisplacementBound.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,9 @@ namespace ompl_parc
         /** \brief The earliest violation in time, readable ("t=42: robots 'r0' and 'r1' collide"); empty if
             valid. */
         std::string message;
+        /** \brief When the earliest violation happens (a timestep, fractional between timesteps), if the plan is
+            invalid in time rather than in shape (a mismatched team or a wrong start has none). */
+        std::optional<double> time;
         /** \brief Number of (robot, sample) configurations that went through FCL's narrow phase: a robot of a
             tested pair, obstacle or self test counts once per timestep or sub-step sample; what the broad phase
             and the swept tests rule out is not counted. */

@@ -245,3 +245,41 @@ def test_a_benchmark_config_gives_its_rows(tmp_path):
     assert rows[0]["case"] == "mobile_cross_4" and rows[0]["ompl_parc_version"] == ompl_parc.__version__
     assert rows[2]["metrics"]["conflicts"] >= 1 and rows[2]["workers"] == 2
     assert (tmp_path / "tiny.log").exists()
+
+
+def test_a_panda_trajectory_round_trips_and_follows_the_plan(tmp_path):
+    problem = ompl_parc.scenario("panda_cage", robots=8)
+    result = ompl_parc.solve(problem, "arc", seed=1, time_limit=60)
+    assert result.solved and ompl_parc.validate(problem, result.plan).valid
+    trajectory = ompl_parc.time_parameterize(problem, result.plan)
+    path = str(tmp_path / "trajectory.json")
+    ompl_parc.write_trajectory(path, problem, result.plan)
+    again = ompl_parc.read_trajectory(path)
+    assert len(again["robots"]) == 8 and again["duration"] == pytest.approx(trajectory["duration"])
+    for robot, read in zip(trajectory["robots"], again["robots"]):
+        assert robot["joint_names"] == read["joint_names"] and len(robot["joint_names"]) == 7
+        for key in ("time_from_start", "positions", "velocities", "accelerations"):
+            np.testing.assert_allclose(robot[key], read[key], rtol=0, atol=1e-12)
+    for i, robot in enumerate(trajectory["robots"]):
+        positions, velocities = robot["positions"], robot["velocities"]
+        assert np.all(np.diff(robot["time_from_start"]) > 0)
+        np.testing.assert_allclose(positions[0], problem.start(i), atol=1e-9)
+        np.testing.assert_allclose(positions[-1], problem.goal(i), atol=1e-9)
+        assert np.all(np.abs(velocities) <= np.array(robot["limits"]["velocity"]) * (1 + 1e-6))
+        # Every point lies on the plan's path, up to the rounding of its corners: within a plan timestep's motion of
+        # some segment between the robot's waypoints.
+        _, waypoints = result.plan.waypoints(i)
+        step = 1.0 / 128.0
+        for q in positions:
+            a, b = waypoints[:-1], waypoints[1:]
+            d = b - a
+            s = np.clip(np.einsum("ij,ij->i", q - a, d) / np.maximum(np.einsum("ij,ij->i", d, d), 1e-300), 0, 1)
+            assert np.min(np.linalg.norm(a + s[:, None] * d - q, axis=1)) <= 64 * step
+    assert len(trajectory["temporal_plan_graph"]["robots"]) == 8
+
+
+def test_a_trajectory_file_of_another_kind_is_refused(tmp_path):
+    path = tmp_path / "solution.json"
+    path.write_text('{"format": "ompl_parc.solution"}')
+    with pytest.raises(ValueError, match="not a trajectory file"):
+        ompl_parc.read_trajectory(str(path))

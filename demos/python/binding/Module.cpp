@@ -7,6 +7,7 @@
 #include "ompl_parc/Version.h"
 #include "ompl_parc/io/ScenarioFile.h"
 #include "ompl_parc/io/SolutionFile.h"
+#include "ompl_parc/io/TrajectoryFile.h"
 #include "ompl_parc/io/HtmlWriter.h"
 #include "ompl_parc/io/SvgWriter.h"
 #include "ompl_parc/planners/setup/PlannerRegistry.h"
@@ -202,5 +203,13 @@ PYBIND11_MODULE(_ompl_parc, m)
         [](const std::string &path, const MultiRobotProblem &problem, const MultiRobotPlan *plan)
         { HtmlWriter::write(path, problem, plan); },
         py::arg("path"), py::arg("problem"), py::arg("plan") = nullptr);
+    m.def(
+        "trajectory_json",
+        [](const MultiRobotProblem &problem, const MultiRobotPlan &plan, std::size_t phaseSteps)
+        {
+            const py::gil_scoped_release released;
+            return TrajectoryFile::fromPlan(problem, plan, phaseSteps).dump();
+        },
+        py::arg("problem"), py::arg("plan"), py::arg("phase_steps") = 4);
     m.def("run_benchmark", &python::runBenchmark, py::arg("path"), py::arg("verbose") = false);
 }

@@ -24,7 +24,7 @@ from . import _ompl_parc
 __all__ = ["OMPL_VERSION", "Plan", "Problem", "SolveResult", "Validation", "__version__", "box", "box2d",
            "cylinder", "disc", "load", "planar_arm", "planner_names", "planner_parameters", "read_solution", "run_benchmark", "scenario",
            "scenario_names", "set_log_level", "solve", "sphere", "team", "urdf_arm", "validate", "write_solution",
-           "write_html", "write_svg"]
+           "write_html", "write_svg", "time_parameterize", "read_trajectory", "write_trajectory"]
 
 
 def scenario(name: str, robots: int, task: int = 0, resolution: float = 128.0) -> Problem:
@@ -144,6 +144,45 @@ def validate(problem: Problem, plan: Plan, substeps: int = 4) -> Validation:
 
 
 _TEXT_COLUMNS = {"case", "case_title", "method", "metrics_json", "scenario", "type", "status", "ompl_parc_version"}
+
+
+def _trajectory_arrays(doc: Dict[str, Any]) -> Dict[str, Any]:
+    import numpy as np
+    robots = []
+    for robot in doc["robots"]:
+        points = robot["points"]
+        robots.append({"name": robot["name"], "kind": robot["kind"], "joint_names": list(robot["joint_names"]),
+                       "limits": robot["limits"], "arrival_time": robot["arrival_time"],
+                       "time_from_start": np.array([p["time_from_start"] for p in points], dtype=float),
+                       "positions": np.array([p["positions"] for p in points], dtype=float),
+                       "velocities": np.array([p["velocities"] for p in points], dtype=float),
+                       "accelerations": np.array([p["accelerations"] for p in points], dtype=float)})
+    return {"duration": doc["duration"], "robots": robots, "temporal_plan_graph": doc.get("temporal_plan_graph")}
+
+
+def time_parameterize(problem: Problem, plan: Plan, phase_steps: int = 4) -> Dict[str, Any]:
+    """The plan as trajectories within each robot's velocity and acceleration limits, conflict-free (checked by the
+    validator), and its temporal plan graph: {"duration", "robots": [{"name", "joint_names", "time_from_start",
+    "positions", "velocities", "accelerations" (NumPy, a row per point), "arrival_time", "limits"}],
+    "temporal_plan_graph"}. The same as read_trajectory() of the file write_trajectory() or the tools write."""
+    return _trajectory_arrays(_json.loads(_ompl_parc.trajectory_json(problem, plan, phase_steps)))
+
+
+def write_trajectory(path: str, problem: Problem, plan: Plan, phase_steps: int = 4) -> None:
+    """Write time_parameterize()'s trajectories and graph as a trajectory file ("format": "ompl_parc.trajectory")."""
+    text = _ompl_parc.trajectory_json(problem, plan, phase_steps)
+    with open(path, "w") as out:
+        out.write(text + "\n")
+
+
+def read_trajectory(path: str) -> Dict[str, Any]:
+    """A trajectory file (ompl_parc_demo --trajectory, ompl_parc_execute --trajectory, write_trajectory()) as
+    time_parameterize() returns it."""
+    with open(path) as f:
+        doc = _json.load(f)
+    if doc.get("format") != "ompl_parc.trajectory":
+        raise ValueError(f"{path}: not a trajectory file (\"format\" is not \"ompl_parc.trajectory\")")
+    return _trajectory_arrays(doc)
 
 
 def _typed(column: str, text: str) -> Any:

@@ -1,0 +1,75 @@
+#ifndef OMPL_PARC_TIME_PARAMETERIZATION_
+#define OMPL_PARC_TIME_PARAMETERIZATION_
+
+#include "ompl_parc/execution/ExecutionCheck.h"
+#include "ompl_parc/execution/TeamTrajectory.h"
+#include "ompl_parc/model/MultiRobotPlan.h"
+#include "ompl_parc/model/MultiRobotProblem.h"
+#include "ompl_parc/robots/MotionLimits.h"
+
+#include <string>
+#include <vector>
+
+namespace ompl_parc
+{
+    /** \brief Turns a team plan (timesteps) into a TeamTrajectory (seconds) within every robot's velocity and
+        acceleration limits (Robot::getMotionLimits()), still conflict-free.
+
+        One clock for the team keeps the plan's order: the team moves through plan time at one rate, so whatever the
+        rate, the robots are where the plan has them at the same plan time. A robot's corner (where its velocity in
+        plan time jumps: it starts, stops or turns) cannot be passed at a positive rate within an acceleration limit,
+        so each corner is rounded over a window of plan time (as wide as needed to pass it at the team's top rate,
+        at most half-way to the robot's neighbouring corners). Half of each acceleration limit goes to the rounding,
+        half to the team's changes of pace. The rate is then the largest profile under the caps (the velocity
+        limits of the robots moving, the roundings' caps; zero at sharp corners, the start and the end) with its
+        changes bounded: the forward-backward pass of time-optimal path parameterization, per timestep.
+
+        Rounding moves robots off the plan near corners, so computeConflictFree() checks the result with the
+        independent validator (ExecutionCheck) and sharpens the corners whose windows hold a violation: the team
+        then slows to rest there and passes exactly through the plan. With every corner sharp the trajectory is the
+        plan's motion itself. */
+    class TimeParameterization
+    {
+      public:
+        /** \brief What computeConflictFree() returns. */
+        struct Result
+        {
+            TeamTrajectory trajectory;
+            /** \brief True once the trajectory passed ExecutionCheck; false only if the plan itself does not. */
+            bool valid{false};
+            /** \brief The last check's violation, if any. */
+            std::string message;
+            /** \brief Corners made sharp, and how many checks it took. */
+            std::size_t sharpened{0};
+            unsigned int checks{0};
+        };
+
+        explicit TimeParameterization(const MultiRobotProblem &problem);
+
+        /** \brief The trajectory with every corner rounded but robot i's corners at the plan timesteps
+            \e sharp[i] (sorted; \e sharp empty or one list per robot). Throws std::invalid_argument if \e plan is
+            not one for the problem's team. */
+        TeamTrajectory compute(const MultiRobotPlan &plan,
+                               const std::vector<std::vector<std::size_t>> &sharp = {}) const;
+
+        /** \brief compute(), checked by ExecutionCheck; each violation sharpens the corners whose windows hold it
+            (each robot's corners on both sides of it if none does) and the check runs again. After \e maxChecks
+            failed checks every corner becomes sharp. */
+        Result computeConflictFree(const MultiRobotPlan &plan, unsigned int maxChecks = 16) const;
+
+        /** \brief ExecutionCheck of \e trajectory over its whole span. */
+        ValidationReport check(const TeamTrajectory &trajectory) const;
+
+        const std::vector<MotionLimits> &getLimits() const { return limits_; }
+        /** \brief The largest speed of any robot (ExecutionCheck::maxSpeed()). */
+        double getMaxSpeed() const { return maxSpeed_; }
+
+      private:
+        MultiRobotProblem problem_;
+        std::vector<MotionLimits> limits_;
+        double maxSpeed_{0.};
+        ExecutionCheck check_;
+    };
+}  // namespace ompl_parc
+
+#endif
