@@ -4,8 +4,8 @@
    2. The temporal plan graph (TemporalPlanGraph).
    3. --runs executions with random delays (each robot starts up to --max-delay s late and runs at --min-speed..1 of
       its speed), time-indexed and coordinated by the graph, every executed instant checked by the validator.
-   Exit 0: the trajectory is conflict-free and no coordinated run collided; 1: otherwise; 2: bad input (one-line
-   reason); 130: interrupted. */
+   Exit 0: the trajectory is conflict-free and no coordinated run collided; 1: otherwise (or the solution itself does
+   not validate); 2: bad input (one-line reason); 130: interrupted. */
 #include "Interruption.h"
 #include "ToolSupport.h"
 
@@ -15,6 +15,7 @@
 #include "ompl_parc/io/SolutionFile.h"
 #include "ompl_parc/io/TrajectoryFile.h"
 #include "ompl_parc/util/ParseNumber.h"
+#include "ompl_parc/validation/SolutionValidator.h"
 
 #include <ompl/util/Time.h>
 
@@ -69,6 +70,11 @@ int main(int argc, char **argv)
                 SolutionFile::read(vm["solution"].as<std::string>(), *problem.getSpaceInformation());
             const auto &si = *problem.getSpaceInformation();
 
+            if (const auto report = SolutionValidator(problem).validate(plan); !report.valid)
+            {
+                std::cout << "invalid solution: " << report.message << std::endl;
+                return static_cast<int>(tools::EXIT_FAILED);
+            }
             ompl::time::point start = ompl::time::now();
             const TimeParameterization timing(problem);
             const auto result = timing.computeConflictFree(plan);

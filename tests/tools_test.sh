@@ -54,6 +54,20 @@ PY
 )
 expect 1 "^invalid: t=$jump: robot 'r0' moves" "$bin/ompl_parc_validate" "$tmp/bad.json"
 
+# Trajectories and delayed execution (ompl_parc_execute; the demo's --trajectory).
+expect 0 "coordinated:  0/3 runs collide" "$bin/ompl_parc_execute" --scenario mobile_cross --robots 4 --runs 3 \
+    --trajectory "$tmp/traj.json" "$tmp/sol.json"
+expect 0 '"format":"ompl_parc.trajectory"' head -c 40 "$tmp/traj.json"
+expect 0 "^trajectory $tmp/traj2.json (" "$bin/ompl_parc_demo" --scenario mobile_cross --robots 4 --trajectory \
+    "$tmp/traj2.json"
+expect 1 "^invalid solution: t=$jump: robot 'r0' moves" "$bin/ompl_parc_execute" --scenario mobile_cross --robots 4 \
+    "$tmp/bad.json"
+expect 2 "min-speed" "$bin/ompl_parc_execute" --scenario mobile_cross --robots 4 --min-speed 0 "$tmp/sol.json"
+expect 2 "runs" "$bin/ompl_parc_execute" --scenario mobile_cross --robots 4 --runs -1 "$tmp/sol.json"
+expect 2 "cannot write '$tmp/none/t.json'" "$bin/ompl_parc_execute" --scenario mobile_cross --robots 4 --runs 0 \
+    --trajectory "$tmp/none/t.json" "$tmp/sol.json"
+expect 2 "no solution file" "$bin/ompl_parc_execute" --scenario mobile_cross --robots 4
+
 echo '{"format": "ompl_parc.solution", "version": 1' >"$tmp/truncated.json"
 expect 2 "not valid JSON" "$bin/ompl_parc_validate" "$tmp/truncated.json"
 expect 2 "cannot open" "$bin/ompl_parc_validate" "$tmp/missing.json"

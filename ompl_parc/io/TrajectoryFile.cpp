@@ -1,6 +1,7 @@
 #include "ompl_parc/io/TrajectoryFile.h"
 
 #include "ompl_parc/execution/TimeParameterization.h"
+#include "ompl_parc/validation/SolutionValidator.h"
 
 #include <fstream>
 #include <stdexcept>
@@ -51,6 +52,8 @@ nlohmann::ordered_json ompl_parc::TrajectoryFile::toJson(const MultiRobotProblem
 nlohmann::ordered_json ompl_parc::TrajectoryFile::fromPlan(const MultiRobotProblem &problem, const MultiRobotPlan &plan,
                                                            std::size_t phaseSteps)
 {
+    if (const auto report = SolutionValidator(problem).validate(plan); !report.valid)
+        throw std::invalid_argument("the plan does not pass the validator: " + report.message);
     const auto result = TimeParameterization(problem).computeConflictFree(plan);
     if (!result.valid)
         throw std::invalid_argument("the plan is not conflict-free: " + result.message);
