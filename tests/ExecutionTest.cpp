@@ -111,10 +111,10 @@ TEST(TimeParameterization, WithEveryCornerSharpTheTeamIsExactlyOnThePlan)
     const auto problem = scenarios::createScenario("mobile_cross", 8);
     const auto plan = solveArc(problem);
     const TimeParameterization timing(problem);
-    std::vector<std::vector<std::size_t>> sharp(plan.getRobotCount());
+    TimeParameterization::WindowCaps sharp(plan.getRobotCount());
     for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
         for (std::size_t t = 0; t <= plan.getMakespan(); ++t)
-            sharp[i].push_back(t);
+            sharp[i][t] = 0.;
     const TeamTrajectory trajectory = timing.compute(plan, sharp);
     EXPECT_EQ(trajectory.getSharpCornerCount() > 0, true);
     expectWithinLimits(trajectory, timing.getLimits(), 2000);

@@ -1,9 +1,13 @@
 #include "ompl_parc/execution/TimeParameterization.h"
 
+#include "ompl_parc/collision/CapsuleCollision.h"
+#include "ompl_parc/validation/DisplacementBound.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <tuple>
 
 namespace
 {
@@ -16,6 +20,12 @@ namespace
             squared += values[d] * values[d];
         return std::sqrt(squared);
     }
+
+    /** Rounds of narrowing the windows where robots would touch before the last makes them sharp. */
+    constexpr unsigned int NARROWING_PASSES = 4;
+
+    /** Samples per timestep of the contact test of rounded corners. */
+    constexpr unsigned int CONTACT_SAMPLES = 2;
 
     /** Caps on the team's rate (timesteps per second): at each timestep, and over each step between two. */
     struct RateCaps
@@ -50,15 +60,15 @@ ompl_parc::TimeParameterization::TimeParameterization(const MultiRobotProblem &p
     }
 }
 
-ompl_parc::TeamTrajectory ompl_parc::TimeParameterization::compute(
-    const MultiRobotPlan &plan, const std::vector<std::vector<std::size_t>> &sharp) const
+ompl_parc::TeamTrajectory ompl_parc::TimeParameterization::compute(const MultiRobotPlan &plan,
+                                                                   const WindowCaps &caps) const
 {
     const auto &si = *problem_.getSpaceInformation();
     if (const std::string mismatch = plan.checkTeam(si); !mismatch.empty())
         throw std::invalid_argument("TimeParameterization: " + mismatch);
     const std::size_t n = si.getRobotCount(), makespan = plan.getMakespan();
-    if (!sharp.empty() && sharp.size() != n)
-        throw std::invalid_argument("TimeParameterization: sharp corners must be given per robot");
+    if (!caps.empty() && caps.size() != n)
+        throw std::invalid_argument("TimeParameterization: window caps must be given per robot");
     TeamTrajectory traj;
     traj.robots_.resize(n);
 
@@ -113,7 +123,7 @@ ompl_parc::TeamTrajectory ompl_parc::TimeParameterization::compute(
         topRate = paceChange = 1.;
 
     // Windows of the corners, and the caps on the rate.
-    RateCaps caps(makespan);
+    RateCaps rateCaps(makespan);
     for (std::size_t i = 0; i < n; ++i)
     {
         auto &path = traj.robots_[i];
@@ -123,7 +133,7 @@ ompl_parc::TeamTrajectory ompl_parc::TimeParameterization::compute(
         for (std::size_t c : path.corners)
         {
             const std::size_t b = path.steps[c];
-            if (b == 0 || b >= makespan || (!sharp.empty() && std::binary_search(sharp[i].begin(), sharp[i].end(), b)))
+            if (b == 0 || b >= makespan)
                 continue;
             const double gapBefore = static_cast<double>(b - path.steps[c - 1]);
             const double gapAfter = static_cast<double>((c + 1 < path.steps.size() ? path.steps[c + 1] : makespan) - b);
@@ -136,6 +146,9 @@ ompl_parc::TeamTrajectory ompl_parc::TimeParameterization::compute(
                 full = std::max(full, groupNorm(change.data(), group.count) * topRate * topRate / group.acceleration);
             }
             path.windows[c] = std::min({gapBefore / 2., gapAfter / 2., full});
+            if (!caps.empty())
+                if (const auto cap = caps[i].find(b); cap != caps[i].end())
+                    path.windows[c] = std::min(path.windows[c], cap->second);
         }
         for (std::size_t j = 0; j < path.steps.size(); ++j)
         {
@@ -148,7 +161,7 @@ ompl_parc::TeamTrajectory ompl_parc::TimeParameterization::compute(
                     if (const double norm = groupNorm(&path.slopes[j * dim + group.first], group.count); norm > 0.)
                         cap = std::min(cap, group.velocity / norm);
                 if (cap < INF)
-                    caps.limit(lo, static_cast<double>(path.steps[j + 1]) + path.windows[j + 1], cap);
+                    rateCaps.limit(lo, static_cast<double>(path.steps[j + 1]) + path.windows[j + 1], cap);
             }
             // A rounded corner: its curvature times the rate squared within half the acceleration limit.
             const double w = path.windows[j];
@@ -164,18 +177,18 @@ ompl_parc::TeamTrajectory ompl_parc::TimeParameterization::compute(
                     if (const double norm = groupNorm(change.data(), group.count); norm > 0.)
                         cap = std::min(cap, std::sqrt(group.acceleration * w / norm));
                 }
-                caps.limit(lo, static_cast<double>(path.steps[j]) + w, cap);
+                rateCaps.limit(lo, static_cast<double>(path.steps[j]) + w, cap);
             }
         }
         for (std::size_t c : path.corners)
             if (path.windows[c] == 0.)
-                caps.point[path.steps[c]] = 0.;
+                rateCaps.point[path.steps[c]] = 0.;
     }
-    caps.point.front() = caps.point.back() = 0.;
+    rateCaps.point.front() = rateCaps.point.back() = 0.;
 
     // The largest rate under the caps whose square changes by at most 2 x paceChange per timestep.
     auto &rate = traj.rates_;
-    rate = caps.point;
+    rate = rateCaps.point;
     rate.front() = 0.;
     for (std::size_t k = 0; k < makespan; ++k)
         rate[k + 1] = std::min(rate[k + 1], std::sqrt(rate[k] * rate[k] + 2. * paceChange));
@@ -191,7 +204,7 @@ ompl_parc::TeamTrajectory ompl_parc::TimeParameterization::compute(
         else
         {
             // From rest to rest: accelerate, then brake, peaking within the step's caps.
-            const double a = std::min(paceChange, caps.span[k] * caps.span[k]);
+            const double a = std::min(paceChange, rateCaps.span[k] * rateCaps.span[k]);
             traj.bangBang_[k] = a;
             traj.times_.push_back(traj.times_.back() + 2. / std::sqrt(a));
         }
@@ -206,20 +219,106 @@ ompl_parc::ValidationReport ompl_parc::TimeParameterization::check(const TeamTra
                         { trajectory.evaluate(i, t, out, nullptr, nullptr); });
 }
 
+std::vector<std::vector<std::size_t>> ompl_parc::TimeParameterization::nearContacts(const TeamTrajectory &traj) const
+{
+    const auto &si = *problem_.getSpaceInformation();
+    const std::size_t n = traj.getRobotCount();
+    // Per robot, half of how far any point of it moves in one timestep (its steepest slope per coordinate).
+    std::vector<double> reach(n, 0.);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const auto &path = traj.robots_[i];
+        std::vector<double> steepest(path.dimension, 0.);
+        for (std::size_t k = 0; k < path.slopes.size(); ++k)
+            steepest[k % path.dimension] = std::max(steepest[k % path.dimension], std::abs(path.slopes[k]));
+        reach[i] = DisplacementBound(*si.getRobot(i))(steepest.data()) / (2. * CONTACT_SAMPLES);
+    }
+    // The validator's tolerance between timesteps (ExecutionCheck), shared by the two bodies of a pair.
+    const double slack = 0.25 / si.getResolution();
+    // Every (sample, robot, corner) of a rounded window, in time order.
+    struct Visit
+    {
+        std::size_t step, robot, corner;
+    };
+    std::vector<Visit> visits;
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t c = 0; c < traj.getCornerCount(i); ++c)
+            if (const double w = traj.getCornerWindow(i, c); w > 0.)
+            {
+                const double b = static_cast<double>(traj.getCornerStep(i, c));
+                const auto first = static_cast<std::size_t>(std::floor((b - w) * CONTACT_SAMPLES));
+                const auto last = static_cast<std::size_t>(std::ceil((b + w) * CONTACT_SAMPLES));
+                for (std::size_t s = first; s <= last; ++s)
+                    visits.push_back({s, i, c});
+            }
+    std::sort(visits.begin(), visits.end(),
+              [](const Visit &a, const Visit &b) { return std::tie(a.step, a.robot) < std::tie(b.step, b.robot); });
+
+    std::vector<std::vector<std::size_t>> contacts(n);
+    std::vector<CollisionBody> bodies(n);
+    std::vector<double> q, dq, ddq;
+    for (std::size_t v = 0; v < visits.size();)
+    {
+        const std::size_t step = visits[v].step;
+        for (std::size_t j = 0; j < n; ++j)
+        {
+            q.resize(traj.getDimension(j)), dq.resize(q.size()), ddq.resize(q.size());
+            traj.pathAt(j, static_cast<double>(step) / CONTACT_SAMPLES, q.data(), dq.data(), ddq.data());
+            si.getRobot(j)->computeCapsules(q.data(), bodies[j]);
+            for (auto &radius : bodies[j].radius_)
+                radius = std::max(0., radius + reach[j] - slack);
+            bodies[j].updateBound();
+        }
+        for (; v < visits.size() && visits[v].step == step; ++v)
+        {
+            const Visit &visit = visits[v];
+            for (std::size_t j = 0; j < n; ++j)
+                if (j != visit.robot && bodiesCollide(bodies[visit.robot], bodies[j]))
+                {
+                    contacts[visit.robot].push_back(visit.corner);
+                    break;
+                }
+        }
+    }
+    for (auto &corners : contacts)
+    {
+        std::sort(corners.begin(), corners.end());
+        corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+    }
+    return contacts;
+}
+
 ompl_parc::TimeParameterization::Result ompl_parc::TimeParameterization::computeConflictFree(
     const MultiRobotPlan &plan, unsigned int maxChecks) const
 {
     Result result;
     const std::size_t n = plan.getRobotCount();
-    std::vector<std::vector<std::size_t>> sharp(n);
-    bool allSharp = false;
-    for (;;)
+    // Narrow the windows where robots would touch (a quarter each time, then sharp), until they do not.
+    WindowCaps caps(n);
+    result.trajectory = compute(plan, caps);
+    for (unsigned int pass = 0; pass < NARROWING_PASSES; ++pass)
     {
-        result.trajectory = compute(plan, sharp);
+        const auto contacts = nearContacts(result.trajectory);
+        bool any = false;
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t c : contacts[i])
+            {
+                const double w = result.trajectory.getCornerWindow(i, c);
+                caps[i][result.trajectory.getCornerStep(i, c)] = pass + 1 < NARROWING_PASSES && w >= 1. ? w / 4. : 0.;
+                any = true;
+            }
+        if (!any)
+            break;
+        result.trajectory = compute(plan, caps);
+    }
+    // The validator decides; a corner whose window holds a violation it finds is made sharp.
+    for (bool allSharp = false;;)
+    {
         const auto &traj = result.trajectory;
         const ValidationReport report = check(traj);
         ++result.checks;
         result.message = report.message;
+        result.sharpened = traj.getSharpCornerCount();
         if (report.valid || !report.time || allSharp)
         {
             result.valid = report.valid;
@@ -240,21 +339,15 @@ ompl_parc::TimeParameterization::Result ompl_parc::TimeParameterization::compute
                                 : std::abs(b - s) <= w + 1.;
                     if (w > 0. && holds)
                     {
-                        sharp[i].push_back(traj.getCornerStep(i, c));
+                        caps[i][traj.getCornerStep(i, c)] = 0.;
                         ++added;
                     }
                 }
         allSharp = added == 0 || result.checks >= maxChecks;
-        for (std::size_t i = 0; i < n; ++i)
-        {
-            if (allSharp)
+        if (allSharp)
+            for (std::size_t i = 0; i < n; ++i)
                 for (std::size_t c = 0; c < traj.getCornerCount(i); ++c)
-                    sharp[i].push_back(traj.getCornerStep(i, c));
-            std::sort(sharp[i].begin(), sharp[i].end());
-            sharp[i].erase(std::unique(sharp[i].begin(), sharp[i].end()), sharp[i].end());
-        }
-        result.sharpened = 0;
-        for (const auto &corners : sharp)
-            result.sharpened += corners.size();
+                    caps[i][traj.getCornerStep(i, c)] = 0.;
+        result.trajectory = compute(plan, caps);
     }
 }

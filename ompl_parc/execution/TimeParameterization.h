@@ -7,6 +7,7 @@
 #include "ompl_parc/model/MultiRobotProblem.h"
 #include "ompl_parc/robots/MotionLimits.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -24,10 +25,11 @@ namespace ompl_parc
         limits of the robots moving, the roundings' caps; zero at sharp corners, the start and the end) with its
         changes bounded: the forward-backward pass of time-optimal path parameterization, per timestep.
 
-        Rounding moves robots off the plan near corners, so computeConflictFree() checks the result with the
-        independent validator (ExecutionCheck) and sharpens the corners whose windows hold a violation: the team
-        then slows to rest there and passes exactly through the plan. With every corner sharp the trajectory is the
-        plan's motion itself. */
+        Rounding moves robots off the plan near corners. computeConflictFree() first narrows the windows where a
+        rounded robot would touch another (nearContacts()), down to sharp corners: there the team slows to rest and
+        passes exactly through the plan. Then the independent validator (ExecutionCheck) checks the result, and any
+       corner whose window holds a violation it still finds is sharpened too. With every corner sharp the trajectory is
+       the plan's motion itself. */
     class TimeParameterization
     {
       public:
@@ -46,15 +48,17 @@ namespace ompl_parc
 
         explicit TimeParameterization(const MultiRobotProblem &problem);
 
-        /** \brief The trajectory with every corner rounded but robot i's corners at the plan timesteps
-            \e sharp[i] (sorted; \e sharp empty or one list per robot). Throws std::invalid_argument if \e plan is
-            not one for the problem's team. */
-        TeamTrajectory compute(const MultiRobotPlan &plan,
-                               const std::vector<std::vector<std::size_t>> &sharp = {}) const;
+        /** \brief Per robot, the largest window (half-width, timesteps; 0: sharp) of its corner at a plan timestep. */
+        using WindowCaps = std::vector<std::map<std::size_t, double>>;
 
-        /** \brief compute(), checked by ExecutionCheck; each violation sharpens the corners whose windows hold it
-            (each robot's corners on both sides of it if none does) and the check runs again. After \e maxChecks
-            failed checks every corner becomes sharp. */
+        /** \brief The trajectory with every corner rounded, its windows no wider than \e caps (empty, or one map per
+            robot). Throws std::invalid_argument if \e plan is not one for the problem's team. */
+        TeamTrajectory compute(const MultiRobotPlan &plan, const WindowCaps &caps = {}) const;
+
+        /** \brief compute(), then the windows of nearContacts() narrowed (to a quarter, a few times, then sharp)
+            until there are none; then checked by ExecutionCheck: each violation sharpens the corners whose windows
+            hold it (each robot's corners on both sides of it if none does) and the check runs again. After
+            \e maxChecks failed checks every corner becomes sharp. */
         Result computeConflictFree(const MultiRobotPlan &plan, unsigned int maxChecks = 16) const;
 
         /** \brief ExecutionCheck of \e trajectory over its whole span. */
@@ -63,6 +67,12 @@ namespace ompl_parc
         const std::vector<MotionLimits> &getLimits() const { return limits_; }
         /** \brief The largest speed of any robot (ExecutionCheck::maxSpeed()). */
         double getMaxSpeed() const { return maxSpeed_; }
+
+        /** \brief Per robot, the indices of its rounded corners in \e trajectory during whose windows it would touch
+            another robot: both at their rounded configurations, twice per plan timestep, capsules grown by how far
+            they move to the nearest sample and shrunk by half the validator's tolerance. A quick filter before the
+            validator, which decides. */
+        std::vector<std::vector<std::size_t>> nearContacts(const TeamTrajectory &trajectory) const;
 
       private:
         MultiRobotProblem problem_;
