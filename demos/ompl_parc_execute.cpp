@@ -51,6 +51,9 @@ int main(int argc, char **argv)
                 "min-speed", po::value<std::string>()->default_value("0.7"),
                 "slowest speed factor of a robot (each draws one in [min-speed, 1])")(
                 "seed", po::value<std::string>()->default_value("1"), "seed of the first run (run k uses seed + k)")(
+                "max-deviation", po::value<std::string>()->default_value("0.1"),
+                "how far rounding a corner may take a robot off the plan's path (its configuration units: rad for "
+                "arms; 0: sharp corners, the team stopping at each)")(
                 "phase-steps", po::value<std::string>()->default_value("4"),
                 "longest phase of the temporal plan graph, timesteps (shorter: more nodes, less waiting)")(
                 "solution", po::value<std::string>(), "solution file");
@@ -65,6 +68,7 @@ int main(int argc, char **argv)
             const double minSpeed = parseReal(vm["min-speed"].as<std::string>(), "--min-speed", 0.01, 1.);
             const auto seed = parseInteger(vm["seed"].as<std::string>(), "--seed", 0, 1ull << 62);
             const auto phaseSteps = parseInteger(vm["phase-steps"].as<std::string>(), "--phase-steps", 1, 1000000);
+            const double maxDeviation = parseReal(vm["max-deviation"].as<std::string>(), "--max-deviation", 0., 1e6);
             const MultiRobotProblem problem = tools::problemFromOptions(vm);
             const MultiRobotPlan plan =
                 SolutionFile::read(vm["solution"].as<std::string>(), *problem.getSpaceInformation());
@@ -76,7 +80,7 @@ int main(int argc, char **argv)
                 return static_cast<int>(tools::EXIT_FAILED);
             }
             ompl::time::point start = ompl::time::now();
-            const TimeParameterization timing(problem);
+            const TimeParameterization timing(problem, maxDeviation);
             const auto result = timing.computeConflictFree(plan);
             const auto &trajectory = result.trajectory;
             double first = trajectory.getDuration(), last = 0.;
@@ -85,9 +89,13 @@ int main(int argc, char **argv)
                 first = std::min(first, trajectory.getArrivalTime(i));
                 last = std::max(last, trajectory.getArrivalTime(i));
             }
+            double deviation = 0.;
+            for (std::size_t i = 0; i < si.getRobotCount(); ++i)
+                deviation = std::max(deviation, trajectory.getMaxDeviation(i));
             std::cout << std::fixed << std::setprecision(2) << "trajectory: " << trajectory.getDuration()
                       << " s, robots arrive after " << first << " to " << last << " s; " << result.sharpened
-                      << " corners made sharp, " << result.checks << " validator checks ("
+                      << " corners made sharp, " << result.checks << " validator checks, off the plan's path by "
+                      << std::setprecision(3) << deviation << " at most (" << std::setprecision(2)
                       << ompl::time::seconds(ompl::time::now() - start) << " s)" << std::endl;
             if (!result.valid)
             {

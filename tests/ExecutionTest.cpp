@@ -91,7 +91,16 @@ TEST(TimeParameterization, PandaCageTrajectoryIsWithinLimitsAndConflictFree)
     EXPECT_DOUBLE_EQ(timing.getLimits()[0].groups[6].velocity, 2.61);
     EXPECT_DOUBLE_EQ(timing.getLimits()[0].groups[6].acceleration, 3. * 2.61);
     for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
+    {
         EXPECT_LE(result.trajectory.getArrivalTime(i), result.trajectory.getDuration() + 1e-9);
+        EXPECT_LE(result.trajectory.getMaxDeviation(i), TimeParameterization::DEFAULT_MAX_DEVIATION * (1. + 1e-12));
+    }
+    // No deviation allowed: every corner sharp, the team resting at each.
+    const TeamTrajectory exact = TimeParameterization(problem, 0.).compute(plan);
+    for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
+        EXPECT_EQ(exact.getMaxDeviation(i), 0.);
+    EXPECT_GT(exact.getDuration(), result.trajectory.getDuration());
+    EXPECT_THROW(TimeParameterization(problem, -1.), std::invalid_argument);
 }
 
 TEST(TimeParameterization, DiscTeamTrajectoryIsWithinLimitsAndConflictFree)

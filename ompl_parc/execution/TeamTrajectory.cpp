@@ -150,6 +150,21 @@ double ompl_parc::TeamTrajectory::getArrivalTime(std::size_t i) const
     return timeAtPlanStep(static_cast<double>(path.steps[c]) + path.windows[c]);
 }
 
+double ompl_parc::TeamTrajectory::getMaxDeviation(std::size_t i) const
+{
+    const RobotPath &path = robots_[i];
+    double deviation = 0.;
+    for (std::size_t c : path.corners)
+        if (path.windows[c] > 0.)
+        {
+            double squared = 0.;
+            for (unsigned int d = 0; d < path.dimension; ++d)
+                squared += std::pow(path.slopes[c * path.dimension + d] - path.slopes[(c - 1) * path.dimension + d], 2);
+            deviation = std::max(deviation, std::sqrt(squared) * path.windows[c] / 4.);
+        }
+    return deviation;
+}
+
 std::size_t ompl_parc::TeamTrajectory::getSharpCornerCount() const
 {
     const std::size_t last = times_.size() - 1;

@@ -36,6 +36,10 @@ namespace ompl_parc
         /** \brief The time at which robot \e i comes to rest at its goal for good. */
         double getArrivalTime(std::size_t i) const;
 
+        /** \brief How far robot \e i's trajectory leaves its plan path at most, in its configuration space's
+            distance: the largest corner cut, |change of slope| x window / 4. */
+        double getMaxDeviation(std::size_t i) const;
+
         /** \brief Robot \e i's corners (plan timesteps where its velocity in plan time changes), and how many of
             them are sharp (the team stops there). */
         std::size_t getCornerCount(std::size_t i) const { return robots_[i].corners.size(); }

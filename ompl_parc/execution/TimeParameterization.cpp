@@ -49,9 +49,11 @@ namespace
     };
 }  // namespace
 
-ompl_parc::TimeParameterization::TimeParameterization(const MultiRobotProblem &problem)
-    : problem_(problem), check_(problem)
+ompl_parc::TimeParameterization::TimeParameterization(const MultiRobotProblem &problem, double maxDeviation)
+    : problem_(problem), maxDeviation_(maxDeviation), check_(problem)
 {
+    if (!(maxDeviation >= 0.) || !std::isfinite(maxDeviation))
+        throw std::invalid_argument("TimeParameterization: the largest deviation must be finite and >= 0");
     const auto &si = *problem.getSpaceInformation();
     for (std::size_t i = 0; i < si.getRobotCount(); ++i)
     {
@@ -145,7 +147,12 @@ ompl_parc::TeamTrajectory ompl_parc::TimeParameterization::compute(const MultiRo
                     change[d] = path.slopes[c * dim + group.first + d] - path.slopes[(c - 1) * dim + group.first + d];
                 full = std::max(full, groupNorm(change.data(), group.count) * topRate * topRate / group.acceleration);
             }
-            path.windows[c] = std::min({gapBefore / 2., gapAfter / 2., full});
+            // The corner cut, |change of slope| x window / 4, within maxDeviation_.
+            std::vector<double> change(dim);
+            for (unsigned int d = 0; d < dim; ++d)
+                change[d] = path.slopes[c * dim + d] - path.slopes[(c - 1) * dim + d];
+            const double cut = 4. * maxDeviation_ / groupNorm(change.data(), dim);
+            path.windows[c] = std::min({gapBefore / 2., gapAfter / 2., full, cut});
             if (!caps.empty())
                 if (const auto cap = caps[i].find(b); cap != caps[i].end())
                     path.windows[c] = std::min(path.windows[c], cap->second);

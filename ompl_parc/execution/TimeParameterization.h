@@ -20,7 +20,8 @@ namespace ompl_parc
         rate, the robots are where the plan has them at the same plan time. A robot's corner (where its velocity in
         plan time jumps: it starts, stops or turns) cannot be passed at a positive rate within an acceleration limit,
         so each corner is rounded over a window of plan time (as wide as needed to pass it at the team's top rate,
-        at most half-way to the robot's neighbouring corners). Half of each acceleration limit goes to the rounding,
+        at most half-way to the robot's neighbouring corners and no wider than keeps the corner cut within the
+        largest deviation). Half of each acceleration limit goes to the rounding,
         half to the team's changes of pace. The rate is then the largest profile under the caps (the velocity
         limits of the robots moving, the roundings' caps; zero at sharp corners, the start and the end) with its
         changes bounded: the forward-backward pass of time-optimal path parameterization, per timestep.
@@ -46,7 +47,12 @@ namespace ompl_parc
             unsigned int checks{0};
         };
 
-        explicit TimeParameterization(const MultiRobotProblem &problem);
+        /** \brief The largest deviation from the plan's path a rounded corner may take a robot, in its configuration
+            space's distance (radians for an arm, as MoveIt's time-optimal trajectory generation's default path
+            tolerance of 0.1; 0: every corner sharp). Throws std::invalid_argument if negative or not finite. */
+        static constexpr double DEFAULT_MAX_DEVIATION = 0.1;
+
+        explicit TimeParameterization(const MultiRobotProblem &problem, double maxDeviation = DEFAULT_MAX_DEVIATION);
 
         /** \brief Per robot, the largest window (half-width, timesteps; 0: sharp) of its corner at a plan timestep. */
         using WindowCaps = std::vector<std::map<std::size_t, double>>;
@@ -77,6 +83,7 @@ namespace ompl_parc
       private:
         MultiRobotProblem problem_;
         std::vector<MotionLimits> limits_;
+        double maxDeviation_;
         double maxSpeed_{0.};
         ExecutionCheck check_;
     };

@@ -274,6 +274,8 @@ namespace
                 out["builtin_urdf"] = builtin->first;
             else
                 out["urdf"] = urdf->getUrdfXml();
+            if (urdf->getSrdf())
+                out["srdf"] = urdf->getSrdf()->getXml();
             out["base_link"] = urdf->getBaseLink();
             out["tip_link"] = urdf->getTipLink();
             out["base_pose"] = poseToJson(urdf->getBasePose());
@@ -321,7 +323,6 @@ namespace
             (file.is_relative() ? std::filesystem::path(folder) / file : file).string());
     }
 
-    /** The robot described by \e value; its start and goal go to \e start and \e goal. */
     /** A robot's "limits": {"velocity": V, "acceleration": A}, each a number for every group of \e defaults or a
         list of one per group (per joint for an arm, one for a disc's speed); a missing one keeps the default. */
     ompl_parc::MotionLimits limitsFromJson(const json &value, ompl_parc::MotionLimits defaults, const std::string &where)
@@ -345,6 +346,23 @@ namespace
         return defaults;
     }
 
+    /** The SRDF of urdf_arm \e value, if it has one: inline ("srdf") or a file ("srdf_file", relative paths from
+        \e folder). */
+    ompl_parc::SrdfPtr srdfFromJson(const json &value, const std::string &where, const std::string &folder)
+    {
+        if (value.contains("srdf") && value.contains("srdf_file"))
+            fail(where + " has both 'srdf' (the XML) and 'srdf_file' (a path); give one");
+        if (value.contains("srdf"))
+            return std::make_shared<ompl_parc::Srdf>(
+                ompl_parc::Srdf::parse(nonEmptyString(value.at("srdf"), where + ".srdf")));
+        if (!value.contains("srdf_file"))
+            return nullptr;
+        const std::filesystem::path file = nonEmptyString(value.at("srdf_file"), where + ".srdf_file");
+        return std::make_shared<ompl_parc::Srdf>(
+            ompl_parc::Srdf::read((file.is_relative() ? std::filesystem::path(folder) / file : file).string()));
+    }
+
+    /** The robot described by \e value; its start and goal go to \e start and \e goal. */
     ompl_parc::RobotPtr robotFromJson(const json &value, const std::string &where,
                                       const ompl_parc::EnvironmentPtr &environment, const std::string &folder,
                                       std::vector<double> &start, std::vector<double> &goal)
@@ -381,10 +399,24 @@ namespace
         {
             // The URDF, the chain's end links, and the base pose ("base_pose": position and orientation).
             allowOnly(value,
-                      {"name", "kind", "urdf", "builtin_urdf", "urdf_file", "base_link", "tip_link", "base_pose",
-                       "limits", "start", "goal"},
+                      {"name", "kind", "urdf", "builtin_urdf", "urdf_file", "srdf", "srdf_file", "group", "base_link",
+                       "tip_link", "base_pose", "limits", "start", "goal"},
                       where);
             const std::string xml = urdfFromJson(value, where, folder);
+            const ompl_parc::SrdfPtr srdf = srdfFromJson(value, where, folder);
+            // The chain: by the SRDF's group, or by its end links.
+            std::pair<std::string, std::string> ends;
+            if (value.contains("group"))
+            {
+                if (!srdf)
+                    fail(where + ".group needs the SRDF that defines it ('srdf' or 'srdf_file')");
+                if (value.contains("base_link") || value.contains("tip_link"))
+                    fail(where + " has 'group' and 'base_link'/'tip_link'; give the group or the links");
+                ends = srdf->getChain(nonEmptyString(value.at("group"), where + ".group"));
+            }
+            else
+                ends = {nonEmptyString(field(value, "base_link", where), where + ".base_link"),
+                        nonEmptyString(field(value, "tip_link", where), where + ".tip_link")};
             Eigen::Isometry3d base = Eigen::Isometry3d::Identity();
             if (value.contains("base_pose"))
             {
@@ -392,9 +424,7 @@ namespace
                 allowOnly(value.at("base_pose"), {"position", "orientation"}, where + ".base_pose");
                 base = poseFromJson(value.at("base_pose"), where + ".base_pose");
             }
-            robot = std::make_shared<ompl_parc::UrdfArm>(
-                name, environment, xml, nonEmptyString(field(value, "base_link", where), where + ".base_link"),
-                nonEmptyString(field(value, "tip_link", where), where + ".tip_link"), base);
+            robot = std::make_shared<ompl_parc::UrdfArm>(name, environment, xml, ends.first, ends.second, base, srdf);
         }
         else
             fail(where + ".kind must be one of disc, planar_arm, urdf_arm (got '" + kind + "')");

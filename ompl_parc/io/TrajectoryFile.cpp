@@ -42,6 +42,7 @@ nlohmann::ordered_json ompl_parc::TrajectoryFile::toJson(const MultiRobotProblem
                                  {"joint_names", robot.getCoordinateNames()},
                                  {"limits", {{"velocity", velocityLimits}, {"acceleration", accelerationLimits}}},
                                  {"arrival_time", trajectory.getArrivalTime(i)},
+                                 {"max_deviation", trajectory.getMaxDeviation(i)},
                                  {"points", points}});
     }
     if (graph)
@@ -50,11 +51,11 @@ nlohmann::ordered_json ompl_parc::TrajectoryFile::toJson(const MultiRobotProblem
 }
 
 nlohmann::ordered_json ompl_parc::TrajectoryFile::fromPlan(const MultiRobotProblem &problem, const MultiRobotPlan &plan,
-                                                           std::size_t phaseSteps)
+                                                           std::size_t phaseSteps, double maxDeviation)
 {
     if (const auto report = SolutionValidator(problem).validate(plan); !report.valid)
         throw std::invalid_argument("the plan does not pass the validator: " + report.message);
-    const auto result = TimeParameterization(problem).computeConflictFree(plan);
+    const auto result = TimeParameterization(problem, maxDeviation).computeConflictFree(plan);
     if (!result.valid)
         throw std::invalid_argument("the plan is not conflict-free: " + result.message);
     const TemporalPlanGraph graph(problem, plan, phaseSteps);

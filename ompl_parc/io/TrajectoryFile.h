@@ -3,6 +3,7 @@
 
 #include "ompl_parc/execution/TeamTrajectory.h"
 #include "ompl_parc/execution/TemporalPlanGraph.h"
+#include "ompl_parc/execution/TimeParameterization.h"
 #include "ompl_parc/model/MultiRobotPlan.h"
 #include "ompl_parc/model/MultiRobotProblem.h"
 
@@ -26,10 +27,12 @@ namespace ompl_parc
                                              const TemporalPlanGraph *graph);
 
         /** \brief toJson() of \e plan's conflict-free trajectory (TimeParameterization::computeConflictFree()) and its
-            temporal plan graph with phases of at most \e phaseSteps timesteps; throws std::invalid_argument if the
+            temporal plan graph with phases of at most \e phaseSteps timesteps, corners cut by at most
+            \e maxDeviation; throws std::invalid_argument if the
             plan does not pass the validator. */
         static nlohmann::ordered_json fromPlan(const MultiRobotProblem &problem, const MultiRobotPlan &plan,
-                                               std::size_t phaseSteps = 4);
+                                               std::size_t phaseSteps = 4,
+                                               double maxDeviation = TimeParameterization::DEFAULT_MAX_DEVIATION);
 
         /** \brief Write \e doc (toJson(), fromPlan()) to \e path; throws std::runtime_error naming the file if it
             cannot. */

@@ -373,6 +373,8 @@ ompl_parc::UrdfArm::Chain ompl_parc::UrdfArm::parseChain(const std::string &urdf
     if (chain.offsets.empty())
         throw ompl::Exception(CONTEXT, "chain '" + baseLink + "' .. '" + tipLink + "' has no movable joint");
     chain.tipOffset = pending;
+    for (const auto &[linkName, link] : model->links_)
+        chain.linkNames.insert(linkName);
     chain.limits.resize(low.size());
     chain.limits.low = low;
     chain.limits.high = high;
@@ -391,8 +393,10 @@ ompl_parc::UrdfArm::Chain ompl_parc::UrdfArm::parseChain(const std::string &urdf
 }
 
 ompl_parc::UrdfArm::UrdfArm(std::string name, EnvironmentPtr environment, const std::string &urdfXml,
-                            const std::string &baseLink, const std::string &tipLink, const Eigen::Isometry3d &basePose)
-    : UrdfArm(std::move(name), std::move(environment), parseChain(urdfXml, baseLink, tipLink), basePose)
+                            const std::string &baseLink, const std::string &tipLink, const Eigen::Isometry3d &basePose,
+                            SrdfPtr srdf)
+    : UrdfArm(std::move(name), std::move(environment), parseChain(urdfXml, baseLink, tipLink), basePose,
+              std::move(srdf))
 {
     urdfXml_ = urdfXml;
     baseLink_ = baseLink;
@@ -400,14 +404,19 @@ ompl_parc::UrdfArm::UrdfArm(std::string name, EnvironmentPtr environment, const 
 }
 
 ompl_parc::UrdfArm::UrdfArm(std::string name, EnvironmentPtr environment, Chain chain,
-                            const Eigen::Isometry3d &basePose)
+                            const Eigen::Isometry3d &basePose, SrdfPtr srdf)
     : Robot(std::move(name), std::move(environment), chain.limits),
       basePose_(basePose),
+      srdf_(std::move(srdf)),
       velocities_(std::move(chain.velocities)),
       jointNames_(std::move(chain.names)),
       tipOffset_(chain.tipOffset),
       primitives_(std::move(chain.primitives))
 {
+    if (srdf_)
+        for (const std::string &link : srdf_->getLinkNames())
+            if (chain.linkNames.count(link) == 0)
+                throw ompl::Exception(CONTEXT, "the SRDF names link '" + link + "', which the URDF does not have");
     // Aligned frame k = URDF frame k turned by A_k, where A_k takes z onto joint k's axis u_k. Since
     // R(u_k, q) = A_k Rz(q) A_k^T, frame k = frame k-1 * O_k * R(u_k, q) becomes, for aligned frames,
     // aligned k = aligned k-1 * (A_{k-1}^T O_k A_k) * Rz(q).
@@ -494,7 +503,8 @@ void ompl_parc::UrdfArm::computeSelfCollisionPairs(const CollisionBody &zeroBody
         for (std::size_t j = i + 1; j < capsules_.size(); ++j)
         {
             const std::size_t fi = capsules_[i].frame, fj = capsules_[j].frame;
-            if (std::max(fi, fj) - std::min(fi, fj) >= 2 && !capsulesCollide(zeroBody, i, zeroBody, j))
+            if (std::max(fi, fj) - std::min(fi, fj) >= 2 && !capsulesCollide(zeroBody, i, zeroBody, j) &&
+                !(srdf_ && srdf_->allows(primitives_[i].shape.name, primitives_[j].shape.name)))
                 selfCollisionPairs_.emplace_back(i, j);
         }
 }

@@ -2,12 +2,14 @@
 #define OMPL_PARC_URDF_ARM_
 
 #include "ompl_parc/robots/Robot.h"
+#include "ompl_parc/robots/Srdf.h"
 #include "ompl_parc/robots/UrdfArmLanes.h"
 
 #include <Eigen/Geometry>
 
 #include <memory>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -29,7 +31,8 @@ namespace ompl_parc
 
         Self-collision is checked between primitives of links that are not adjacent on the chain, except for
         pairs that already overlap at the zero configuration (clamped into the joint limits): like an SRDF's
-        "default"/"adjacent" disabled pairs, such overlaps are part of the mechanical design. */
+        "default"/"adjacent" disabled pairs, such overlaps are part of the mechanical design. An SRDF given with
+        the arm removes the link pairs its `<disable_collisions>` name too (and must name links of the URDF only). */
     class UrdfArm : public Robot
     {
       public:
@@ -46,7 +49,7 @@ namespace ompl_parc
             URDF, missing links, unsupported joints or geometry, non-serial chains, and a base pose that puts
             the base link (or a link fixed to it) into an obstacle of \e environment (as it is now). */
         UrdfArm(std::string name, EnvironmentPtr environment, const std::string &urdfXml, const std::string &baseLink,
-                const std::string &tipLink, const Eigen::Isometry3d &basePose);
+                const std::string &tipLink, const Eigen::Isometry3d &basePose, SrdfPtr srdf = nullptr);
 
         /** \brief The contents of a URDF file; throws ompl::Exception if it cannot be read. */
         static std::string readFile(const std::string &path);
@@ -82,6 +85,9 @@ namespace ompl_parc
         const std::string &getTipLink() const { return tipLink_; }
         /** \brief Pose of the tip link in the frame of the last movable joint's child link. */
         const Eigen::Isometry3d &getTipOffset() const { return tipOffset_; }
+        /** \brief The SRDF whose `<disable_collisions>` pairs are left out of the self-collision check (null if
+            none). */
+        const SrdfPtr &getSrdf() const { return srdf_; }
         /** \brief Names of the movable joints, base to tip. */
         const std::vector<std::string> &getJointNames() const { return jointNames_; }
         std::vector<std::string> getCoordinateNames() const override { return jointNames_; }
@@ -110,6 +116,8 @@ namespace ompl_parc
             std::vector<Eigen::Vector3d> axes;
             std::vector<std::string> names;
             std::vector<double> velocities;
+            /** \brief Every link of the URDF (an SRDF may name only these). */
+            std::set<std::string> linkNames;
             Eigen::Isometry3d tipOffset{Eigen::Isometry3d::Identity()};
             std::vector<Primitive> primitives;
         };
@@ -117,7 +125,8 @@ namespace ompl_parc
         /** \brief Parses the chain once, before the Robot base needs its bounds. */
         static Chain parseChain(const std::string &urdfXml, const std::string &baseLink, const std::string &tipLink);
 
-        UrdfArm(std::string name, EnvironmentPtr environment, Chain chain, const Eigen::Isometry3d &basePose);
+        UrdfArm(std::string name, EnvironmentPtr environment, Chain chain, const Eigen::Isometry3d &basePose,
+                SrdfPtr srdf);
 
         /** \brief Joint-aligned frames at \e q, the one forward kinematics every query uses: frame k is chain
             link k's frame turned by alignment_[k] so that joint k turns about its z axis. A joint then costs
@@ -127,7 +136,7 @@ namespace ompl_parc
                                   std::vector<Eigen::Vector3d> &translations) const;
 
         /** \brief Self-collision pairs: primitives of non-adjacent links not overlapping in \e zeroBody (the
-            body at the zero configuration). */
+            body at the zero configuration) whose links the SRDF does not allow to touch. */
         void computeSelfCollisionPairs(const CollisionBody &zeroBody);
 
         /** \brief Throws ompl::Exception naming the link and the obstacle if a link that never moves (the base
@@ -136,6 +145,7 @@ namespace ompl_parc
         void checkFixedLinks(const CollisionBody &body) const;
 
         Eigen::Isometry3d basePose_;
+        SrdfPtr srdf_;
         std::vector<double> velocities_;
         std::string urdfXml_, baseLink_, tipLink_;
         /** \brief Per movable joint k, the offset from aligned frame k-1 to aligned frame k at q_k = 0. */

@@ -266,15 +266,14 @@ def test_a_panda_trajectory_round_trips_and_follows_the_plan(tmp_path):
         np.testing.assert_allclose(positions[0], problem.start(i), atol=1e-9)
         np.testing.assert_allclose(positions[-1], problem.goal(i), atol=1e-9)
         assert np.all(np.abs(velocities) <= np.array(robot["limits"]["velocity"]) * (1 + 1e-6))
-        # Every point lies on the plan's path, up to the rounding of its corners: within a plan timestep's motion of
-        # some segment between the robot's waypoints.
+        # Every point lies on the plan's path, up to the rounding of its corners (0.1 rad at most, the default).
         _, waypoints = result.plan.waypoints(i)
-        step = 1.0 / 128.0
+        assert 0 <= robot["max_deviation"] <= 0.1 + 1e-12
         for q in positions:
             a, b = waypoints[:-1], waypoints[1:]
             d = b - a
             s = np.clip(np.einsum("ij,ij->i", q - a, d) / np.maximum(np.einsum("ij,ij->i", d, d), 1e-300), 0, 1)
-            assert np.min(np.linalg.norm(a + s[:, None] * d - q, axis=1)) <= 64 * step
+            assert np.min(np.linalg.norm(a + s[:, None] * d - q, axis=1)) <= robot["max_deviation"] + 1e-9
     assert len(trajectory["temporal_plan_graph"]["robots"]) == 8
 
 
@@ -283,3 +282,22 @@ def test_a_trajectory_file_of_another_kind_is_refused(tmp_path):
     path.write_text('{"format": "ompl_parc.solution"}')
     with pytest.raises(ValueError, match="not a trajectory file"):
         ompl_parc.read_trajectory(str(path))
+
+
+def test_an_arm_named_by_its_srdf_group_with_its_own_limits(tmp_path):
+    srdf = tmp_path / "panda.srdf"
+    srdf.write_text('<robot name="panda"><group name="arm"><chain base_link="panda_link0" tip_link="panda_link8"/>'
+                    '</group><disable_collisions link1="panda_link1" link2="panda_link3" reason="Never"/></robot>')
+    q0, q1 = [0, 0, 0, -1.5, 0, 1.5, 0], [0.5, 0, 0, -1.5, 0, 1.5, 0]
+    problem = ompl_parc.team([ompl_parc.urdf_arm("a", q0, q1, srdf_file=str(srdf), group="arm",
+                                                 limits={"velocity": 1.0, "acceleration": 2.0})])
+    result = ompl_parc.solve(problem, "arc", seed=1, time_limit=30)
+    assert result.solved
+    trajectory = ompl_parc.time_parameterize(problem, result.plan)
+    robot = trajectory["robots"][0]
+    assert robot["limits"] == {"velocity": [1.0] * 7, "acceleration": [2.0] * 7}
+    assert np.all(np.abs(robot["velocities"]) <= 1.0 + 1e-9)
+    # 0.5 rad at 1 rad/s and 2 rad/s^2 takes at least 0.5 s (accelerating and braking: 2 sqrt(0.25 / 2)).
+    assert trajectory["duration"] >= 2 * (0.25 / 2) ** 0.5
+    with pytest.raises(ValueError, match="no group 'hand'"):
+        ompl_parc.team([ompl_parc.urdf_arm("a", q0, q1, srdf_file=str(srdf), group="hand")])

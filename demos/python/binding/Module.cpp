@@ -205,11 +205,12 @@ PYBIND11_MODULE(_ompl_parc, m)
         py::arg("path"), py::arg("problem"), py::arg("plan") = nullptr);
     m.def(
         "trajectory_json",
-        [](const MultiRobotProblem &problem, const MultiRobotPlan &plan, std::size_t phaseSteps)
+        [](const MultiRobotProblem &problem, const MultiRobotPlan &plan, std::size_t phaseSteps, double maxDeviation)
         {
             const py::gil_scoped_release released;
-            return TrajectoryFile::fromPlan(problem, plan, phaseSteps).dump();
+            return TrajectoryFile::fromPlan(problem, plan, phaseSteps, maxDeviation).dump();
         },
-        py::arg("problem"), py::arg("plan"), py::arg("phase_steps") = 4);
+        py::arg("problem"), py::arg("plan"), py::arg("phase_steps") = 4,
+        py::arg("max_deviation") = TimeParameterization::DEFAULT_MAX_DEVIATION);
     m.def("run_benchmark", &python::runBenchmark, py::arg("path"), py::arg("verbose") = false);
 }

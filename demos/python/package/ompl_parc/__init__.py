@@ -64,11 +64,23 @@ def planar_arm(name: str, link_lengths: Sequence[float], start: Sequence[float],
 
 def urdf_arm(name: str, start: Sequence[float], goal: Sequence[float], builtin: Optional[str] = "panda",
              urdf_file: Optional[str] = None, base_link: str = "panda_link0", tip_link: str = "panda_link8",
-             position: Sequence[float] = (0, 0, 0), orientation: Sequence[float] = (1, 0, 0, 0)) -> Dict[str, Any]:
+             position: Sequence[float] = (0, 0, 0), orientation: Sequence[float] = (1, 0, 0, 0),
+             srdf_file: Optional[str] = None, group: Optional[str] = None,
+             limits: Optional[Dict[str, Any]] = None) -> Dict[str, Any]:
     """A serial arm from a URDF: a built-in model (builtin="panda") or a file (urdf_file=..., builtin=None), the
-    chain base_link .. tip_link, its base placed at position with the unit quaternion orientation (w, x, y, z)."""
-    robot: Dict[str, Any] = {"name": name, "kind": "urdf_arm", "base_link": base_link, "tip_link": tip_link,
-                             "base_pose": _pose(position, orientation), "start": list(start), "goal": list(goal)}
+    chain base_link .. tip_link (or an SRDF's chain group: srdf_file=..., group=...; the SRDF's disabled collisions
+    apply too), its base placed at position with the unit quaternion orientation (w, x, y, z); limits
+    ({"velocity": ..., "acceleration": ...}, a number or one per joint) for time_parameterize()."""
+    robot: Dict[str, Any] = {"name": name, "kind": "urdf_arm", "base_pose": _pose(position, orientation),
+                             "start": list(start), "goal": list(goal)}
+    if srdf_file is not None:
+        robot["srdf_file"] = _os.path.abspath(srdf_file)
+    if group is not None:
+        robot["group"] = group
+    else:
+        robot["base_link"], robot["tip_link"] = base_link, tip_link
+    if limits is not None:
+        robot["limits"] = dict(limits)
     if urdf_file is not None:
         robot["urdf_file"] = _os.path.abspath(urdf_file)
     else:
@@ -153,6 +165,7 @@ def _trajectory_arrays(doc: Dict[str, Any]) -> Dict[str, Any]:
         points = robot["points"]
         robots.append({"name": robot["name"], "kind": robot["kind"], "joint_names": list(robot["joint_names"]),
                        "limits": robot["limits"], "arrival_time": robot["arrival_time"],
+                       "max_deviation": robot["max_deviation"],
                        "time_from_start": np.array([p["time_from_start"] for p in points], dtype=float),
                        "positions": np.array([p["positions"] for p in points], dtype=float),
                        "velocities": np.array([p["velocities"] for p in points], dtype=float),
@@ -160,17 +173,20 @@ def _trajectory_arrays(doc: Dict[str, Any]) -> Dict[str, Any]:
     return {"duration": doc["duration"], "robots": robots, "temporal_plan_graph": doc.get("temporal_plan_graph")}
 
 
-def time_parameterize(problem: Problem, plan: Plan, phase_steps: int = 4) -> Dict[str, Any]:
+def time_parameterize(problem: Problem, plan: Plan, phase_steps: int = 4, max_deviation: float = 0.1) -> Dict[str, Any]:
     """The plan as trajectories within each robot's velocity and acceleration limits, conflict-free (checked by the
     validator), and its temporal plan graph: {"duration", "robots": [{"name", "joint_names", "time_from_start",
-    "positions", "velocities", "accelerations" (NumPy, a row per point), "arrival_time", "limits"}],
-    "temporal_plan_graph"}. The same as read_trajectory() of the file write_trajectory() or the tools write."""
-    return _trajectory_arrays(_json.loads(_ompl_parc.trajectory_json(problem, plan, phase_steps)))
+    "positions", "velocities", "accelerations" (NumPy, a row per point), "arrival_time", "limits",
+    "max_deviation" (how far it leaves the plan's path at most, rounding corners)}],
+    "temporal_plan_graph"}. Rounding a corner takes a robot off the plan's path by at most max_deviation (its
+    configuration units; 0: sharp corners). The same as read_trajectory() of the file write_trajectory() or the tools
+    write."""
+    return _trajectory_arrays(_json.loads(_ompl_parc.trajectory_json(problem, plan, phase_steps, max_deviation)))
 
 
-def write_trajectory(path: str, problem: Problem, plan: Plan, phase_steps: int = 4) -> None:
+def write_trajectory(path: str, problem: Problem, plan: Plan, phase_steps: int = 4, max_deviation: float = 0.1) -> None:
     """Write time_parameterize()'s trajectories and graph as a trajectory file ("format": "ompl_parc.trajectory")."""
-    text = _ompl_parc.trajectory_json(problem, plan, phase_steps)
+    text = _ompl_parc.trajectory_json(problem, plan, phase_steps, max_deviation)
     with open(path, "w") as out:
         out.write(text + "\n")
 
