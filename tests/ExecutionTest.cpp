@@ -75,6 +75,15 @@ namespace
                 EXPECT_NEAR(q[d], problem.getGoal(i)[d], 1e-9);
         }
     }
+
+    /** A trajectory that passed the validator, from the start to the goal, within the limits at every sample. */
+    void expectExecutable(const MultiRobotProblem &problem, const TimeParameterization &timing,
+                          const TimeParameterization::Result &result)
+    {
+        ASSERT_TRUE(result.valid) << result.message;
+        expectStartsAndEnds(problem, result.trajectory);
+        expectWithinLimits(result.trajectory, timing.getLimits(), 4000);
+    }
 }  // namespace
 
 TEST(TimeParameterization, PandaCageTrajectoryIsWithinLimitsAndConflictFree)
@@ -83,9 +92,7 @@ TEST(TimeParameterization, PandaCageTrajectoryIsWithinLimitsAndConflictFree)
     const auto plan = solveArc(problem);
     const TimeParameterization timing(problem);
     const auto result = timing.computeConflictFree(plan);
-    ASSERT_TRUE(result.valid) << result.message;
-    expectStartsAndEnds(problem, result.trajectory);
-    expectWithinLimits(result.trajectory, timing.getLimits(), 4000);
+    expectExecutable(problem, timing, result);
     // The Panda's own limits: the URDF's velocities, three times them per second as accelerations.
     EXPECT_DOUBLE_EQ(timing.getLimits()[0].groups[0].velocity, 2.175);
     EXPECT_DOUBLE_EQ(timing.getLimits()[0].groups[6].velocity, 2.61);
@@ -109,9 +116,7 @@ TEST(TimeParameterization, DiscTeamTrajectoryIsWithinLimitsAndConflictFree)
     const auto plan = solveArc(problem);
     const TimeParameterization timing(problem);
     const auto result = timing.computeConflictFree(plan);
-    ASSERT_TRUE(result.valid) << result.message;
-    expectStartsAndEnds(problem, result.trajectory);
-    expectWithinLimits(result.trajectory, timing.getLimits(), 4000);
+    expectExecutable(problem, timing, result);
     EXPECT_EQ(timing.getLimits()[0].groups.size(), 1u);  // a disc's speed, whatever the heading
 }
 
