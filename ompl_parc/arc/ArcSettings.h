@@ -39,9 +39,9 @@ namespace ompl_parc
             for many steps: nearly the same subproblem again, which ARC retried for most of its budget on the Panda
             cells it failed. A failed global round then starts the schedule over (fresh seeds), so a window that needs
             more tries gets them between global rounds. 1 (the mobile and planar profiles): every window of the
-            schedule is tried, and one equal to the failed window goes global. The panda profile's 1.25, with
-            composite RRT-Connect alone, solved 19/20 Panda cells at 16 robots against 9-10/20 and Panda Cage 16
-            task 4 for seeds 1-3 (README); on 2D robots it lost rooms and crossing instances (without the cycle). */
+            schedule is tried, and one equal to the failed window goes global. The panda profile uses 1.25: arm teams
+            whose windows fail repeat nearly the same subproblem otherwise; on 2D robots it loses instances
+            (measured in CHANGELOG). */
         double minWindowGrowth{1.};
         /** \brief Timesteps by which an invalid local start (goal) side is widened until it is valid. */
         unsigned int endpointStep{200};
@@ -60,8 +60,8 @@ namespace ompl_parc
         bool simplifyInitial{true};
         /** \brief A robot whose straight motion from start to goal is valid takes it in the initial stage instead of
             being planned: the shortest path, at the cost of one motion check. In open space this is most robots,
-            and building a planner per robot (its space, trees, samplers, random generators) was most of the stage
-            (Mobile Cross 256: 7 ms, now 0.3 ms). Off: every robot is planned, as the authors do. */
+            and building a planner per robot (its space, trees, samplers, random generators) would be most of the
+            stage. Off: every robot is planned, as the authors do. */
         bool straightInitial{true};
         /** \brief Shorten composite repair patches before they are spliced (OMPL's simplifier on the team's composite
             path, bounded like the initial paths'): off by default, as in the paper; plan quality is PlanSmoother's
@@ -70,8 +70,8 @@ namespace ompl_parc
         /** \brief Add multi-agent path finding on a lattice (LatticeMapfSolver) to the hierarchies that have more than
             one solver: after composite RRT-Connect in COMPOSITE_FIRST, last in HIERARCHY. It applies to teams of
             translating robots only (the others decline it at once) and solves the dense 2D teams where the other two
-            fail: issue 15's crossing of 48 robots, 3 of 20 instances (ARC, 30 s) without it, all 20 with it (median
-            1.9 s), at a cost in plan length (README). Off: the solvers of the paper. */
+            fail (the generator's crossing family, CHANGELOG), at a cost in plan length. Off: the solvers of the
+            paper. */
         bool latticeMapf{true};
         /** \brief Add moving the team's robots one at a time (SequentialRRTConnectSolver) right after composite
             RRT-Connect: for arms whose workspaces overlap, where the coupled search runs out of time and most orders
