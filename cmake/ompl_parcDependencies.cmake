@@ -7,6 +7,7 @@ find_dependency(Eigen3)
 find_dependency(fcl)
 find_dependency(ccd)
 find_dependency(urdfdom)
+find_dependency(assimp)
 find_dependency(nlohmann_json)
 find_dependency(Boost COMPONENTS program_options serialization filesystem system)
 # The installed config sets OMPL_PARC_OMPL_VERSION and OMPL_PARC_OMPL_DIR to the OMPL the library was built

@@ -13,6 +13,7 @@
 #include "ompl_parc/io/PictureFile.h"
 #include "ompl_parc/io/SolutionFile.h"
 #include "ompl_parc/io/TrajectoryFile.h"
+#include "ompl_parc/meshes/BoxFit.h"
 #include "ompl_parc/io/SvgWriter.h"
 #include "ompl_parc/planners/ArcPlannerBase.h"
 #include "ompl_parc/planners/ORPARC.h"
@@ -21,6 +22,7 @@
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
 #include "ompl_parc/quality/PlanQuality.h"
 #include "ompl_parc/quality/PlanSmoother.h"
+#include "ompl_parc/robots/UrdfArm.h"
 #include "ompl_parc/util/InnerPlannerLog.h"
 #include "ompl_parc/util/ParseNumber.h"
 #include "ompl_parc/util/StopSignal.h"
@@ -32,8 +34,10 @@
 #include <ompl/util/RandomNumbers.h>
 #include <ompl/util/Time.h>
 
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <optional>
 
 namespace po = boost::program_options;
@@ -85,6 +89,46 @@ namespace
                       << " conflicts resolved, " << orparc.getRacer(k).getParallelStatistics().repairAttempts
                       << " repair attempts\n";
         }
+    }
+
+    /** How tightly the primitives planning checks fit the meshes: per URDF with meshes (once for all the robots
+        that share it) and per mesh obstacle, the fitted volume over the mesh's (1 is exact). */
+    void printMeshFits(const MultiRobotSpaceInformation &si)
+    {
+        std::map<std::string, std::vector<std::string>> robotsOf;
+        std::vector<const UrdfArm *> arms;
+        for (unsigned int r = 0; r < si.getRobotCount(); ++r)
+            if (const auto *arm = dynamic_cast<const UrdfArm *>(si.getRobot(r).get()); arm && !arm->getMeshes().empty())
+            {
+                auto &names = robotsOf[arm->getUrdfXml()];
+                if (names.empty())
+                    arms.push_back(arm);
+                names.push_back(arm->getName());
+            }
+        std::cout << std::setprecision(3);
+        for (const UrdfArm *arm : arms)
+        {
+            std::vector<std::pair<double, std::string>> ratios;
+            std::size_t capsules = 0;
+            for (const auto &mesh : arm->getMeshes())
+            {
+                ratios.emplace_back(mesh.fit.getVolumeRatio(), mesh.link);
+                capsules += mesh.fit.getCapsules().size();
+            }
+            std::sort(ratios.begin(), ratios.end());
+            const std::size_t sharing = robotsOf[arm->getUrdfXml()].size();
+            std::cout << "meshes     robot " << arm->getName()
+                      << (sharing > 1 ? " (and " + std::to_string(sharing - 1) + " more of its URDF)" : "") << ": "
+                      << ratios.size() << " meshes in " << capsules << " capsules, fitted / mesh volume median "
+                      << ratios[ratios.size() / 2].first << ", worst " << ratios.back().first << " ("
+                      << ratios.back().second << ")\n";
+        }
+        const auto &environment = *si.getRobot(0)->getEnvironment();
+        for (std::size_t k = 0; k < environment.getObstacles().size(); ++k)
+            if (const auto &fit = environment.getBoxFit(k))
+                std::cout << "meshes     obstacle " << environment.getObstacles()[k].name << ": "
+                          << fit->getBoxes().size() << " boxes, fitted / mesh volume " << fit->getVolumeRatio() << "\n";
+        std::cout << std::defaultfloat;
     }
 
     void printStatistics(const ompl::base::Planner &planner, double planTime)
@@ -259,8 +303,9 @@ int main(int argc, char **argv)
             planner->setProblemDefinition(pdef);
             planner->setup();
 
-            std::cout << "scenario   " << problem.getName() << ", " << si->getRobotCount() << " robots\n"
-                      << "planner    " << planner->getName() << profileNote(*planner, *si) << "\n";
+            std::cout << "scenario   " << problem.getName() << ", " << si->getRobotCount() << " robots\n";
+            printMeshFits(*si);
+            std::cout << "planner    " << planner->getName() << profileNote(*planner, *si) << "\n";
             std::optional<tools::ProgressLine> progress;
             if (vm.count("quiet") == 0)
                 progress.emplace("planning...", PlannerRegistry::progressOf(*planner), si->getRobotCount());

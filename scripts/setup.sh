@@ -11,7 +11,7 @@ esac
 # What the library and the demo tools need (scripts/demo.sh: `setup.sh --demo`) ...
 PACKAGES=(
     build-essential cmake pkg-config
-    libompl-dev libfcl-dev libccd-dev liburdfdom-dev libtinyxml-dev libeigen3-dev libxsimd-dev
+    libompl-dev libfcl-dev libccd-dev liburdfdom-dev libtinyxml-dev libeigen3-dev libxsimd-dev libassimp-dev
     libboost-dev libboost-program-options-dev libboost-serialization-dev
     libboost-filesystem-dev libboost-system-dev
     nlohmann-json3-dev libjs-three

@@ -49,14 +49,19 @@ TEST(Srdf, ReadsAllowedPairsInEitherOrderAndChainGroups)
     EXPECT_TRUE(srdf.allows("panda_link3", "panda_link1"));
     EXPECT_FALSE(srdf.allows("panda_link1", "panda_link4"));
     EXPECT_EQ(srdf.getChain("arm"), std::make_pair(std::string("panda_link0"), std::string("panda_link8")));
-    EXPECT_NE(messageOf([&] { srdf.getChain("hand"); }).find("no group 'hand' (groups: arm)"), std::string::npos);
+    EXPECT_NE(messageOf([&] { srdf.getChain("hand"); }).find("no group 'hand' (chain groups: arm)"), std::string::npos);
 }
 
 TEST(Srdf, RefusesMalformedInputWithOneLine)
 {
     for (const auto &[text, expected] : std::vector<std::pair<std::string, std::string>>{
              {"<robot><disable_collisions link1=\"a\"/></robot>", "has no link2"},
-             {"<robot><group name=\"g\"><joint name=\"j\"/></group></robot>", "only chain groups"},
+             {"<robot><group name=\"g\"><chain base_link=\"a\" tip_link=\"b\"/><chain base_link=\"a\" "
+              "tip_link=\"c\"/></group></robot>",
+              "more than one <chain>"},
+             {"<robot><group name=\"g\"><link name=\"a\"/></group><group name=\"g\"><link name=\"b\"/></group>"
+              "</robot>",
+              "defined twice"},
              {"<robot><group name=\"g\"><chain base_link=\"a\" tip_link=\"b\"/></group>"
               "<group name=\"g\"><chain base_link=\"a\" tip_link=\"b\"/></group></robot>",
               "defined twice"},

@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include "ompl_parc/meshes/BoxFit.h"
+
+#include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/capsule.h>
 #include <fcl/geometry/shape/cylinder.h>
@@ -19,6 +22,8 @@ namespace
             return positive(o.size.x()) && positive(o.size.y()) && positive(o.size.z());
         if (o.shape == Shape::SPHERE)
             return positive(o.size.x());
+        if (o.shape == Shape::MESH)
+            return o.mesh != nullptr;
         return positive(o.size.x()) && positive(o.size.z());
     }
 }  // namespace
@@ -34,8 +39,22 @@ std::shared_ptr<fcl::CollisionGeometryd> ompl_parc::Environment::createGeometry(
             return std::make_shared<fcl::Sphered>(o.size.x());
         case Shape::CYLINDER:
             return std::make_shared<fcl::Cylinderd>(o.size.x(), o.size.z());
+        case Shape::MESH:
+            return createMeshGeometry(*o.mesh);
     }
     return nullptr;
+}
+
+std::shared_ptr<fcl::CollisionGeometryd> ompl_parc::Environment::createMeshGeometry(const TriangleMesh &mesh)
+{
+    std::vector<fcl::Triangle> triangles;
+    for (const auto &t : mesh.getTriangles())
+        triangles.emplace_back(t[0], t[1], t[2]);
+    auto model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
+    model->beginModel(static_cast<int>(triangles.size()), static_cast<int>(mesh.getVertices().size()));
+    model->addSubModel(mesh.getVertices(), triangles);
+    model->endModel();
+    return model;
 }
 
 void ompl_parc::Environment::addObstacle(const Obstacle &obstacle)
@@ -46,9 +65,24 @@ void ompl_parc::Environment::addObstacle(const Obstacle &obstacle)
         throw ompl::Exception("Environment", "obstacle '" + obstacle.name + "' has a non-finite pose");
     auto object = std::make_shared<fcl::CollisionObjectd>(createGeometry(obstacle), obstacle.pose);
     object->computeAABB();
+    std::shared_ptr<const BoxFit> fit;
+    if (obstacle.shape == Obstacle::Shape::MESH)
+    {
+        fit = std::make_shared<const BoxFit>(*obstacle.mesh, obstacle.fitResolution);
+        for (const Eigen::AlignedBox3d &box : fit->getBoxes())
+        {
+            Obstacle part;
+            part.name = obstacle.name;
+            part.size = box.sizes();
+            part.pose = obstacle.pose * Eigen::Translation3d(box.center());
+            primitives_.add(part);
+        }
+    }
+    else
+        primitives_.add(obstacle);
     obstacles_.push_back(obstacle);
     objects_.push_back(std::move(object));
-    primitives_.add(obstacle);
+    fits_.push_back(std::move(fit));
 }
 
 void ompl_parc::Environment::addBox2D(const std::string &name, double centerX, double centerY, double sizeX,

@@ -15,18 +15,22 @@
 
 namespace ompl_parc
 {
+    class BoxFit;
+
     /** \brief The static world all robots share.
 
         Robots are tested through their CollisionBody (capsules). Planning asks collides(): analytic,
         conservative primitive distances on flat arrays (ObstacleSet), no FCL and no allocation. collidesFcl()
         and findCollision() convert the capsules to FCL capsules and spheres and ask FCL exactly (an AABB test
         skips far obstacles): the reference the analytic test is checked against, and the test that names the
-        obstacle for error messages. Every Obstacle shape is a primitive; a shape without an analytic test (a
-        mesh) would have to go through FCL. All queries are const and thread safe. */
+        obstacle for error messages. A mesh obstacle is checked in planning as the boxes of its BoxFit (they
+        contain it) and by FCL as its triangles (a bounding-volume hierarchy): exact where it counts, in the
+        validator. All queries are const and thread safe. */
     class Environment
     {
       public:
-        /** \brief Add an obstacle; throws ompl::Exception for non-positive sizes. */
+        /** \brief Add an obstacle; throws ompl::Exception for non-positive sizes or a mesh obstacle without a
+            mesh. */
         void addObstacle(const Obstacle &obstacle);
 
         /** \brief Convenience for 2D worlds: a box of the given footprint, extruded over z in [-1, 1]. */
@@ -40,6 +44,12 @@ namespace ompl_parc
 
         /** \brief A new FCL geometry for \e obstacle (in its local frame). */
         static std::shared_ptr<fcl::CollisionGeometryd> createGeometry(const Obstacle &obstacle);
+
+        /** \brief A new FCL bounding-volume hierarchy (OBBRSS) of \e mesh's triangles. */
+        static std::shared_ptr<fcl::CollisionGeometryd> createMeshGeometry(const TriangleMesh &mesh);
+
+        /** \brief The boxes planning checks for obstacle \e k if it is a mesh, else null. */
+        const std::shared_ptr<const BoxFit> &getBoxFit(std::size_t k) const { return fits_[k]; }
 
         /** \brief True if any capsule of \e body touches any obstacle, or comes within ObstacleSet::MARGIN of
             one, or passes the rim of a cylinder closely: conservative, never false where collidesFcl() is true. */
@@ -58,6 +68,7 @@ namespace ompl_parc
       private:
         std::vector<Obstacle> obstacles_;
         std::vector<std::shared_ptr<fcl::CollisionObjectd>> objects_;
+        std::vector<std::shared_ptr<const BoxFit>> fits_;
         ObstacleSet primitives_;
     };
 

@@ -4,6 +4,8 @@
 #include "ompl_parc/collision/NearCapsules.h"
 #include "ompl_parc/collision/PrimitiveDistance.h"
 
+#include <ompl/util/Exception.h>
+
 #include <algorithm>
 #include <array>
 #include <limits>
@@ -55,6 +57,9 @@ void ompl_parc::ObstacleSet::add(const Obstacle &obstacle)
         case Obstacle::Shape::CYLINDER:
             half = Eigen::Vector3d(obstacle.size.x(), obstacle.size.x(), 0.5 * obstacle.size.z());
             break;
+        case Obstacle::Shape::MESH:
+            throw ompl::Exception("ObstacleSet", "mesh obstacle '" + obstacle.name +
+                                                     "' must be added as the boxes fitted around it (Environment)");
     }
     for (int k = 0; k < 3; ++k)
         f.half[k] = half[k];
@@ -145,6 +150,8 @@ bool ompl_parc::ObstacleSet::capsuleHits(const CollisionBody &body, std::size_t 
             return capsuleHitsSphere(body, i, frames_[k]);
         case Obstacle::Shape::CYLINDER:
             return capsuleHitsCylinder(body, i, frames_[k]);
+        case Obstacle::Shape::MESH:
+            break;  // never added
     }
     return true;
 }

@@ -29,7 +29,8 @@ namespace ompl_parc
         /** \brief Distance below which a capsule counts as touching an obstacle (metres). */
         static constexpr double MARGIN = 1e-6;
 
-        /** \brief Add \e obstacle (its shape, size and pose; the caller checked the sizes). */
+        /** \brief Add \e obstacle (its shape, size and pose; the caller checked the sizes). A primitive only:
+            throws ompl::Exception for a mesh, which Environment adds as its fitted boxes. */
         void add(const Obstacle &obstacle);
 
         /** \brief True if any capsule of \e body comes within MARGIN of any obstacle (conservative). Uses the

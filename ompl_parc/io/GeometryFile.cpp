@@ -48,6 +48,21 @@ namespace
                 }
                 break;
             }
+            case Shape::MESH:
+            {
+                out["shape"] = "mesh";
+                json vertices = json::array(), triangles = json::array();
+                for (const Eigen::Vector3d &v : o.mesh->getVertices())
+                {
+                    const Eigen::Vector3d world = o.pose * v;
+                    vertices.insert(vertices.end(), {world.x(), world.y(), world.z()});
+                }
+                for (const auto &t : o.mesh->getTriangles())
+                    triangles.insert(triangles.end(), {t[0], t[1], t[2]});
+                out["vertices"] = std::move(vertices);
+                out["triangles"] = std::move(triangles);
+                break;
+            }
         }
         return out;
     }

@@ -196,13 +196,23 @@ namespace
                 out["radius"] = o.size.x();
                 out["length"] = o.size.z();
                 break;
+            case Shape::MESH:
+            {
+                // An absolute path: the file written may go to another folder than the one read.
+                const Eigen::Vector3d &scale = o.mesh->getScale();
+                out["shape"] = "mesh";
+                out["file"] = std::filesystem::absolute(o.mesh->getFile()).lexically_normal().string();
+                out["scale"] = {scale.x(), scale.y(), scale.z()};
+                out["fit_resolution"] = o.fitResolution;
+                break;
+            }
         }
         out.update(poseToJson(o.pose));
         return out;
     }
 
     /** Parse obstacle \e value (at \e where, index \e index) into \e environment. */
-    void addObstacle(const json &value, const std::string &where, std::size_t index,
+    void addObstacle(const json &value, const std::string &where, std::size_t index, const std::string &folder,
                      ompl_parc::Environment &environment)
     {
         using Shape = ompl_parc::Obstacle::Shape;
@@ -242,8 +252,32 @@ namespace
             o.size.z() = number(field(value, "length", where), where + ".length", true);
             o.shape = Shape::CYLINDER;
         }
+        else if (shape == "mesh")
+        {
+            allowOnly(value, {"name", "shape", "file", "scale", "fit_resolution", "position", "orientation"}, where);
+            const std::filesystem::path file = nonEmptyString(field(value, "file", where), where + ".file");
+            Eigen::Vector3d scale = Eigen::Vector3d::Ones();
+            if (value.contains("scale"))
+            {
+                const json &s = value.at("scale");
+                const auto factors = s.is_number() ? std::vector<double>(3, number(s, where + ".scale", true))
+                                                   : numbers(s, where + ".scale", 3);
+                requirePositive(factors, where + ".scale");
+                scale = Eigen::Vector3d(factors[0], factors[1], factors[2]);
+            }
+            if (value.contains("fit_resolution"))
+            {
+                const double cells = number(value.at("fit_resolution"), where + ".fit_resolution", true);
+                if (cells != std::floor(cells) || cells > 256.)
+                    fail(where + ".fit_resolution must be a whole number of cells, 1 .. 256");
+                o.fitResolution = static_cast<unsigned int>(cells);
+            }
+            o.mesh = ompl_parc::TriangleMesh::read(
+                (file.is_relative() ? std::filesystem::path(folder) / file : file).lexically_normal().string(), scale);
+            o.shape = Shape::MESH;
+        }
         else
-            fail(where + ".shape must be one of box, box2d, sphere, cylinder (got '" + shape + "')");
+            fail(where + ".shape must be one of box, box2d, sphere, cylinder, mesh (got '" + shape + "')");
 
         o.pose = poseFromJson(value, where);
         environment.addObstacle(o);
@@ -279,6 +313,21 @@ namespace
             out["base_link"] = urdf->getBaseLink();
             out["tip_link"] = urdf->getTipLink();
             out["base_pose"] = poseToJson(urdf->getBasePose());
+            if (!urdf->getMeshes().empty())
+            {
+                // Absolute folders: the file written may go to another folder than the one read.
+                const auto &options = urdf->getMeshOptions();
+                const auto absolute = [](const std::string &path)
+                { return std::filesystem::absolute(path).lexically_normal().string(); };
+                out["mesh_folder"] = absolute(options.locator.getFolder());
+                if (!options.locator.getPackagePath().empty())
+                {
+                    out["mesh_path"] = ordered_json::array();
+                    for (const std::string &path : options.locator.getPackagePath())
+                        out["mesh_path"].push_back(absolute(path));
+                }
+                out["mesh_capsules"] = options.maxCapsules;
+            }
         }
         else
             fail("robot '" + robot.getName() + "' of kind '" + robot.getKind() + "' cannot be written");
@@ -296,9 +345,12 @@ namespace
     }
 
     /** The URDF text of urdf_arm \e value: inline ("urdf"), a built-in model ("builtin_urdf") or a file
-        ("urdf_file", relative paths from \e folder, the scenario file's folder). */
-    std::string urdfFromJson(const json &value, const std::string &where, const std::string &folder)
+        ("urdf_file", relative paths from \e folder, the scenario file's folder; \e urdfFolder becomes the file's
+        folder, where its relative mesh paths start). */
+    std::string urdfFromJson(const json &value, const std::string &where, const std::string &folder,
+                             std::string &urdfFolder)
     {
+        urdfFolder = folder;
         if (value.contains("urdf") + value.contains("builtin_urdf") + value.contains("urdf_file") != 1)
             fail(where +
                  " needs exactly one of 'urdf' (the XML), 'builtin_urdf' (a model's name) or 'urdf_file' "
@@ -318,9 +370,10 @@ namespace
             }
             return it->second();
         }
-        const std::filesystem::path file = nonEmptyString(value.at("urdf_file"), where + ".urdf_file");
-        return ompl_parc::UrdfArm::readFile(
-            (file.is_relative() ? std::filesystem::path(folder) / file : file).string());
+        std::filesystem::path file = nonEmptyString(value.at("urdf_file"), where + ".urdf_file");
+        file = file.is_relative() ? std::filesystem::path(folder) / file : file;
+        urdfFolder = file.parent_path().string();
+        return ompl_parc::UrdfArm::readFile(file.string());
     }
 
     /** A robot's "limits": {"velocity": V, "acceleration": A}, each a number for every group of \e defaults or a
@@ -344,6 +397,41 @@ namespace
                     limits[g];
         }
         return defaults;
+    }
+
+    /** Where urdf_arm \e value's meshes are found and how they are fitted: relative mesh paths from "mesh_folder"
+        (else \e urdfFolder), packages also in the folders of "mesh_path", at most "mesh_capsules" capsules a mesh;
+        relative folders from \e folder. */
+    ompl_parc::UrdfMeshOptions meshOptionsFromJson(const json &value, const std::string &where,
+                                                   const std::string &folder, const std::string &urdfFolder)
+    {
+        const auto fromScenario = [&](const std::string &path)
+        {
+            const std::filesystem::path p(path);
+            return (p.is_relative() ? std::filesystem::path(folder) / p : p).lexically_normal().string();
+        };
+        std::string meshFolder = urdfFolder;
+        if (value.contains("mesh_folder"))
+            meshFolder = fromScenario(nonEmptyString(value.at("mesh_folder"), where + ".mesh_folder"));
+        std::vector<std::string> packagePath;
+        if (value.contains("mesh_path"))
+        {
+            const json &path = value.at("mesh_path");
+            if (!path.is_array())
+                fail(where + ".mesh_path must be a list of folders");
+            for (std::size_t k = 0; k < path.size(); ++k)
+                packagePath.push_back(
+                    fromScenario(nonEmptyString(path[k], where + ".mesh_path[" + std::to_string(k) + "]")));
+        }
+        ompl_parc::UrdfMeshOptions options{ompl_parc::MeshLocator(meshFolder, packagePath)};
+        if (value.contains("mesh_capsules"))
+        {
+            const double capsules = number(value.at("mesh_capsules"), where + ".mesh_capsules", true);
+            if (capsules != std::floor(capsules) || capsules > 64.)
+                fail(where + ".mesh_capsules must be a whole number of capsules, 1 .. 64");
+            options.maxCapsules = static_cast<unsigned int>(capsules);
+        }
+        return options;
     }
 
     /** The SRDF of urdf_arm \e value, if it has one: inline ("srdf") or a file ("srdf_file", relative paths from
@@ -400,9 +488,11 @@ namespace
             // The URDF, the chain's end links, and the base pose ("base_pose": position and orientation).
             allowOnly(value,
                       {"name", "kind", "urdf", "builtin_urdf", "urdf_file", "srdf", "srdf_file", "group", "base_link",
-                       "tip_link", "base_pose", "limits", "start", "goal"},
+                       "tip_link", "base_pose", "mesh_folder", "mesh_path", "mesh_capsules", "limits", "start", "goal"},
                       where);
-            const std::string xml = urdfFromJson(value, where, folder);
+            std::string urdfFolder;
+            const std::string xml = urdfFromJson(value, where, folder, urdfFolder);
+            const ompl_parc::UrdfMeshOptions meshOptions = meshOptionsFromJson(value, where, folder, urdfFolder);
             const ompl_parc::SrdfPtr srdf = srdfFromJson(value, where, folder);
             // The chain: by the SRDF's group, or by its end links.
             std::pair<std::string, std::string> ends;
@@ -424,7 +514,8 @@ namespace
                 allowOnly(value.at("base_pose"), {"position", "orientation"}, where + ".base_pose");
                 base = poseFromJson(value.at("base_pose"), where + ".base_pose");
             }
-            robot = std::make_shared<ompl_parc::UrdfArm>(name, environment, xml, ends.first, ends.second, base, srdf);
+            robot = std::make_shared<ompl_parc::UrdfArm>(name, environment, xml, ends.first, ends.second, base, srdf,
+                                                         meshOptions);
         }
         else
             fail(where + ".kind must be one of disc, planar_arm, urdf_arm (got '" + kind + "')");
@@ -542,7 +633,7 @@ ompl_parc::MultiRobotProblem ompl_parc::ScenarioFile::fromJson(const std::string
         if (!obstacles.is_array())
             fail("obstacles must be an array");
         for (std::size_t i = 0; i < obstacles.size(); ++i)
-            addObstacle(obstacles[i], "obstacles[" + std::to_string(i) + "]", i, *environment);
+            addObstacle(obstacles[i], "obstacles[" + std::to_string(i) + "]", i, folder, *environment);
     }
 
     const json &robots = field(doc, "robots", "scenario");

@@ -84,11 +84,14 @@ namespace
         return hull;
     }
 
-    /** The footprint of a box or cylinder: its corners (or rim points) in the world, seen from above. */
+    /** The footprint of a box, cylinder or mesh: its corners (rim points, vertices) in the world, seen from
+        above, and their convex hull. */
     std::vector<Point> footprint(const ompl_parc::Obstacle &o)
     {
         std::vector<Eigen::Vector3d> local;
-        if (o.shape == ompl_parc::Obstacle::Shape::BOX)
+        if (o.shape == ompl_parc::Obstacle::Shape::MESH)
+            local = o.mesh->getVertices();
+        else if (o.shape == ompl_parc::Obstacle::Shape::BOX)
         {
             for (int corner = 0; corner < 8; ++corner)
                 local.emplace_back((corner & 1 ? 0.5 : -0.5) * o.size.x(), (corner & 2 ? 0.5 : -0.5) * o.size.y(),

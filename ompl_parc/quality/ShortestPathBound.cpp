@@ -66,6 +66,8 @@ void ompl_parc::ShortestPathBound::addObstacle(const Obstacle &obstacle)
     const Eigen::Matrix3d r = obstacle.pose.linear();
     const Eigen::Vector3d c = obstacle.pose.translation();
     const Eigen::Vector2d centre = c.head<2>();
+    if (obstacle.shape == Obstacle::Shape::MESH)
+        return;  // left out: fewer obstacles never raise a lower bound
     if (obstacle.shape == Obstacle::Shape::SPHERE)
     {
         const double reach = clearance_ + obstacle.size.x();

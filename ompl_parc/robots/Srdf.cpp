@@ -43,12 +43,17 @@ ompl_parc::Srdf ompl_parc::Srdf::parse(const std::string &xml)
         const std::string name = attribute(*g, "name", "a <group>");
         const std::string where = "group '" + name + "'";
         const TiXmlElement *chain = g->FirstChildElement("chain");
-        if (chain == nullptr || chain->NextSiblingElement("chain") != nullptr)
-            throw ompl::Exception(
-                SRDF_CONTEXT, "malformed SRDF: " + where + " has no single <chain> (only chain groups are supported)");
+        if (chain == nullptr)
+        {
+            if (srdf.groups_.count(name) != 0 || !srdf.otherGroups_.insert(name).second)
+                throw ompl::Exception(SRDF_CONTEXT, "malformed SRDF: " + where + " is defined twice");
+            continue;
+        }
+        if (chain->NextSiblingElement("chain") != nullptr)
+            throw ompl::Exception(SRDF_CONTEXT, "malformed SRDF: " + where + " has more than one <chain>");
         const auto ends = std::make_pair(attribute(*chain, "base_link", where + "'s <chain>"),
                                          attribute(*chain, "tip_link", where + "'s <chain>"));
-        if (!srdf.groups_.emplace(name, ends).second)
+        if (srdf.otherGroups_.count(name) != 0 || !srdf.groups_.emplace(name, ends).second)
             throw ompl::Exception(SRDF_CONTEXT, "malformed SRDF: " + where + " is defined twice");
     }
     return srdf;
@@ -67,8 +72,11 @@ std::pair<std::string, std::string> ompl_parc::Srdf::getChain(const std::string 
     std::string names;
     for (const auto &[name, ends] : groups_)
         names += (names.empty() ? "" : ", ") + name;
-    throw ompl::Exception(SRDF_CONTEXT,
-                          "the SRDF has no group '" + group + "' (groups: " + (names.empty() ? "none" : names) + ")");
+    const std::string chains = " (chain groups: " + (names.empty() ? std::string("none") : names) + ")";
+    if (otherGroups_.count(group) != 0)
+        throw ompl::Exception(SRDF_CONTEXT, "the SRDF's group '" + group + "' is not a <chain>: it cannot name an arm" +
+                                                chains);
+    throw ompl::Exception(SRDF_CONTEXT, "the SRDF has no group '" + group + "'" + chains);
 }
 
 std::set<std::string> ompl_parc::Srdf::getLinkNames() const

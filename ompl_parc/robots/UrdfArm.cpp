@@ -3,6 +3,7 @@
 #include "ompl_parc/util/TextFile.h"
 
 #include "ompl_parc/collision/CapsuleCollision.h"
+#include "ompl_parc/meshes/CapsuleFitCache.h"
 
 #include <console_bridge/console.h>
 #include <ompl/util/Exception.h>
@@ -194,9 +195,36 @@ namespace
         }
     };
 
-    /** The primitive of one <collision> element of \e link, placed by \e linkPose in chain frame \e frame. */
-    ompl_parc::UrdfArm::Primitive toPrimitive(const urdf::Link &link, const urdf::Collision &collision,
-                                              std::size_t frame, const Eigen::Isometry3d &linkPose)
+    /** The capsules fitted around mesh \e meshIndex of the arm, placed by \e pose in chain frame \e frame, as
+        primitives: a cylinder is the capsule of its axis and radius (a sphere where the axis has no length). */
+    void addFittedCapsules(const std::string &link, const ompl_parc::CapsuleFit &fit, std::size_t frame,
+                           const Eigen::Isometry3d &pose, int meshIndex,
+                           std::vector<ompl_parc::UrdfArm::Primitive> &out)
+    {
+        using Shape = ompl_parc::Obstacle::Shape;
+        for (const auto &capsule : fit.getCapsules())
+        {
+            ompl_parc::Obstacle shape;
+            shape.name = link;
+            const Eigen::Vector3d axis = capsule.b - capsule.a;
+            shape.pose = pose * Eigen::Translation3d(0.5 * (capsule.a + capsule.b));
+            shape.size.x() = capsule.radius;
+            shape.shape = Shape::SPHERE;
+            if (axis.norm() > 0.)
+            {
+                shape.shape = Shape::CYLINDER;
+                shape.size.z() = axis.norm();
+                shape.pose.rotate(Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), axis));
+            }
+            out.push_back({frame, shape, meshIndex});
+        }
+    }
+
+    /** The primitives of one <collision> element of \e link, placed by \e linkPose in chain frame \e frame: one
+        for a box, cylinder or sphere, the fitted capsules for a mesh (then also an entry of \e meshes). */
+    void addPrimitives(const urdf::Link &link, const urdf::Collision &collision, std::size_t frame,
+                       const Eigen::Isometry3d &linkPose, const ompl_parc::UrdfArm::MeshOptions &options,
+                       std::vector<ompl_parc::UrdfArm::Primitive> &out, std::vector<ompl_parc::UrdfArm::LinkMesh> &meshes)
     {
         using Shape = ompl_parc::Obstacle::Shape;
         ompl_parc::Obstacle shape;
@@ -227,10 +255,25 @@ namespace
                 shape.size = Eigen::Vector3d(cylinder->radius, 0., cylinder->length);
                 break;
             }
-            default:
-                throw ompl::Exception(CONTEXT, "link '" + link.name +
-                                                   "' has mesh collision geometry; only box, cylinder and sphere "
-                                                   "are supported");
+            case urdf::Geometry::MESH:
+            {
+                const auto *mesh = static_cast<const urdf::Mesh *>(geometry);
+                const Eigen::Vector3d scale(mesh->scale.x, mesh->scale.y, mesh->scale.z);
+                try
+                {
+                    ompl_parc::UrdfArm::LinkMesh entry{link.name, frame, shape.pose, "", scale, ompl_parc::CapsuleFit()};
+                    entry.file = options.locator.resolve(mesh->filename);
+                    entry.fit = ompl_parc::CapsuleFitCache::fit(entry.file, scale, options.maxCapsules,
+                                                                options.writeCache);
+                    addFittedCapsules(link.name, entry.fit, frame, shape.pose, static_cast<int>(meshes.size()), out);
+                    meshes.push_back(std::move(entry));
+                }
+                catch (const ompl::Exception &e)
+                {
+                    throw ompl::Exception(CONTEXT, "link '" + link.name + "': " + e.what());
+                }
+                return;
+            }
         }
         // Every dimension a shape uses must be positive and finite (a negative radius is not a smaller shape).
         const auto positive = [](double v) { return std::isfinite(v) && v > 0.; };
@@ -241,7 +284,7 @@ namespace
             sized = sized && positive(shape.size.z());
         if (!sized)
             throw ompl::Exception(CONTEXT, "link '" + link.name + "' has a collision primitive of non-positive size");
-        return {frame, shape};
+        out.push_back({frame, shape, -1});
     }
 
     /** Primitives of \e root and of the links hanging off it by fixed joints (not \e onChain ones). Iterative
@@ -249,7 +292,9 @@ namespace
         whose joints lead back to a link already visited is refused. */
     void collectPrimitives(const urdf::ModelInterface &model, const urdf::Link &root, std::size_t frame,
                            const Eigen::Isometry3d &rootPose, const std::vector<const urdf::Joint *> &onChain,
-                           std::set<const urdf::Link *> &visited, std::vector<ompl_parc::UrdfArm::Primitive> &out)
+                           const ompl_parc::UrdfArm::MeshOptions &options, std::set<const urdf::Link *> &visited,
+                           std::vector<ompl_parc::UrdfArm::Primitive> &out,
+                           std::vector<ompl_parc::UrdfArm::LinkMesh> &meshes)
     {
         std::vector<std::pair<const urdf::Link *, Eigen::Isometry3d>> pending = {{&root, rootPose}};
         while (!pending.empty())
@@ -259,7 +304,7 @@ namespace
             if (!visited.insert(link).second)
                 throw ompl::Exception(CONTEXT, "the URDF's joints form a loop through link '" + link->name + "'");
             for (const auto &collision : link->collision_array)
-                out.push_back(toPrimitive(*link, *collision, frame, linkPose));
+                addPrimitives(*link, *collision, frame, linkPose, options, out, meshes);
             for (const auto &joint : link->child_joints)
             {
                 if (std::find(onChain.begin(), onChain.end(), joint.get()) != onChain.end())
@@ -277,7 +322,7 @@ namespace
 }  // namespace
 
 ompl_parc::UrdfArm::Chain ompl_parc::UrdfArm::parseChain(const std::string &urdfXml, const std::string &baseLink,
-                                                         const std::string &tipLink)
+                                                         const std::string &tipLink, const MeshOptions &options)
 {
     if (const std::size_t bad = firstInvalidUtf8(urdfXml); bad != std::string::npos)
         throw ompl::Exception(CONTEXT, "malformed URDF: not UTF-8 text (byte " + std::to_string(bad) + ")");
@@ -385,8 +430,8 @@ ompl_parc::UrdfArm::Chain ompl_parc::UrdfArm::parseChain(const std::string &urdf
         links.push_back(model->getLink(joint->child_link_name).get());
     std::set<const urdf::Link *> visited;
     for (std::size_t k = 0; k < links.size(); ++k)
-        collectPrimitives(*model, *links[k], linkPoses[k].first, linkPoses[k].second, joints, visited,
-                          chain.primitives);
+        collectPrimitives(*model, *links[k], linkPoses[k].first, linkPoses[k].second, joints, options, visited,
+                          chain.primitives, chain.meshes);
     if (chain.primitives.empty())
         throw ompl::Exception(CONTEXT, "chain '" + baseLink + "' .. '" + tipLink + "' has no collision geometry");
     return chain;
@@ -394,10 +439,11 @@ ompl_parc::UrdfArm::Chain ompl_parc::UrdfArm::parseChain(const std::string &urdf
 
 ompl_parc::UrdfArm::UrdfArm(std::string name, EnvironmentPtr environment, const std::string &urdfXml,
                             const std::string &baseLink, const std::string &tipLink, const Eigen::Isometry3d &basePose,
-                            SrdfPtr srdf)
-    : UrdfArm(std::move(name), std::move(environment), parseChain(urdfXml, baseLink, tipLink), basePose,
+                            SrdfPtr srdf, const MeshOptions &meshOptions)
+    : UrdfArm(std::move(name), std::move(environment), parseChain(urdfXml, baseLink, tipLink, meshOptions), basePose,
               std::move(srdf))
 {
+    meshOptions_ = meshOptions;
     urdfXml_ = urdfXml;
     baseLink_ = baseLink;
     tipLink_ = tipLink;
@@ -411,7 +457,8 @@ ompl_parc::UrdfArm::UrdfArm(std::string name, EnvironmentPtr environment, Chain 
       velocities_(std::move(chain.velocities)),
       jointNames_(std::move(chain.names)),
       tipOffset_(chain.tipOffset),
-      primitives_(std::move(chain.primitives))
+      primitives_(std::move(chain.primitives)),
+      meshes_(std::move(chain.meshes))
 {
     if (srdf_)
         for (const std::string &link : srdf_->getLinkNames())

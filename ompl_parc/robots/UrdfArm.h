@@ -1,8 +1,10 @@
 #ifndef OMPL_PARC_URDF_ARM_
 #define OMPL_PARC_URDF_ARM_
 
+#include "ompl_parc/meshes/CapsuleFit.h"
 #include "ompl_parc/robots/Robot.h"
 #include "ompl_parc/robots/Srdf.h"
+#include "ompl_parc/robots/UrdfMeshOptions.h"
 #include "ompl_parc/robots/UrdfArmLanes.h"
 
 #include <Eigen/Geometry>
@@ -26,8 +28,10 @@ namespace ompl_parc
         Collision geometry comes from the `<collision>` elements: a sphere stays a sphere, a cylinder becomes
         the capsule around it (same axis and radius), a box the capsule along its longest axis whose radius
         is the half-diagonal of its cross-section; both contain the primitive, so robot-robot checks on the
-        capsules are conservative. Meshes are rejected, naming the link. Capsule k of the body is primitive
-        k of getPrimitives(), so exact checks (FCL on the primitives) can be compared with ours.
+        capsules are conservative. A mesh (STL, OBJ, COLLADA; found by MeshOptions::locator) becomes the
+        capsules of its CapsuleFit, which contain it, cached beside the mesh (CapsuleFitCache); getMeshes() says
+        how tight each fit is. Capsule k of the body is primitive k of getPrimitives(), so exact checks (FCL on
+        the primitives, and on the meshes themselves: UrdfFclModel) can be compared with ours.
 
         Self-collision is checked between primitives of links that are not adjacent on the chain, except for
         pairs that already overlap at the zero configuration (clamped into the joint limits): like an SRDF's
@@ -42,14 +46,32 @@ namespace ompl_parc
         {
             std::size_t frame;
             Obstacle shape;
+            /** \brief The index in getMeshes() of the mesh this capsule was fitted to (a cylinder standing for the
+                capsule of its axis, or a sphere), or -1 for a primitive of the URDF. */
+            int mesh{-1};
         };
+
+        /** \brief A mesh of the URDF: the link it belongs to, its pose in chain frame \e frame, its file and
+            scale, and the capsules fitted to it. */
+        struct LinkMesh
+        {
+            std::string link;
+            std::size_t frame;
+            Eigen::Isometry3d pose;
+            std::string file;
+            Eigen::Vector3d scale;
+            CapsuleFit fit;
+        };
+
+        using MeshOptions = UrdfMeshOptions;
 
         /** \brief The chain \e baseLink .. \e tipLink of the URDF document \e urdfXml, its base link placed at
             \e basePose in the world. Throws ompl::Exception naming the offending element for malformed
             URDF, missing links, unsupported joints or geometry, non-serial chains, and a base pose that puts
             the base link (or a link fixed to it) into an obstacle of \e environment (as it is now). */
         UrdfArm(std::string name, EnvironmentPtr environment, const std::string &urdfXml, const std::string &baseLink,
-                const std::string &tipLink, const Eigen::Isometry3d &basePose, SrdfPtr srdf = nullptr);
+                const std::string &tipLink, const Eigen::Isometry3d &basePose, SrdfPtr srdf = nullptr,
+                const MeshOptions &meshOptions = {});
 
         /** \brief The contents of a URDF file; throws ompl::Exception if it cannot be read. */
         static std::string readFile(const std::string &path);
@@ -78,6 +100,9 @@ namespace ompl_parc
                              unsigned int restarts = 50, double tolerance = 1e-4) const;
 
         const std::vector<Primitive> &getPrimitives() const { return primitives_; }
+        /** \brief The URDF's meshes on the chain, with their fits (empty for a URDF of primitives). */
+        const std::vector<LinkMesh> &getMeshes() const { return meshes_; }
+        const MeshOptions &getMeshOptions() const { return meshOptions_; }
         const Eigen::Isometry3d &getBasePose() const { return basePose_; }
         /** \brief The URDF document and chain ends the arm was built from (so it can be written out again). */
         const std::string &getUrdfXml() const { return urdfXml_; }
@@ -120,10 +145,12 @@ namespace ompl_parc
             std::set<std::string> linkNames;
             Eigen::Isometry3d tipOffset{Eigen::Isometry3d::Identity()};
             std::vector<Primitive> primitives;
+            std::vector<LinkMesh> meshes;
         };
 
         /** \brief Parses the chain once, before the Robot base needs its bounds. */
-        static Chain parseChain(const std::string &urdfXml, const std::string &baseLink, const std::string &tipLink);
+        static Chain parseChain(const std::string &urdfXml, const std::string &baseLink, const std::string &tipLink,
+                                const MeshOptions &options);
 
         UrdfArm(std::string name, EnvironmentPtr environment, Chain chain, const Eigen::Isometry3d &basePose,
                 SrdfPtr srdf);
@@ -156,6 +183,8 @@ namespace ompl_parc
         std::vector<std::string> jointNames_;
         Eigen::Isometry3d tipOffset_;
         std::vector<Primitive> primitives_;
+        std::vector<LinkMesh> meshes_;
+        MeshOptions meshOptions_;
         /** \brief The primitives' capsules, in their link's aligned frame; whether all are spheres. */
         std::vector<LocalCapsule> capsules_;
         bool spheresOnly_{false};

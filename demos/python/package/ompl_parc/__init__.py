@@ -8,14 +8,14 @@
         times, configs = result.plan.waypoints(0)   # robot 0: timesteps and configurations (NumPy)
 
 Problems come from the built-in scenarios (scenario()), scenario files (load()) or a team built here (team() with
-disc(), planar_arm(), urdf_arm() and the obstacles box(), box2d(), sphere(), cylinder()). Bad input raises
+disc(), planar_arm(), urdf_arm() and the obstacles box(), box2d(), sphere(), cylinder(), mesh()). Bad input raises
 ValueError with the same one-line message the command-line tools print.
 """
 import csv as _csv
 import json as _json
 import os as _os
 import warnings as _warnings
-from typing import Any, Dict, List, Optional, Sequence
+from typing import Any, Dict, List, Optional, Sequence, Union
 
 from ._ompl_parc import OMPL_VERSION, Plan, Problem, SolveResult, Validation, __version__
 from ._ompl_parc import planner_names, planner_parameters, read_solution, scenario_names, write_html, write_solution, write_svg
@@ -66,11 +66,14 @@ def urdf_arm(name: str, start: Sequence[float], goal: Sequence[float], builtin: 
              urdf_file: Optional[str] = None, base_link: str = "panda_link0", tip_link: str = "panda_link8",
              position: Sequence[float] = (0, 0, 0), orientation: Sequence[float] = (1, 0, 0, 0),
              srdf_file: Optional[str] = None, group: Optional[str] = None,
-             limits: Optional[Dict[str, Any]] = None) -> Dict[str, Any]:
+             limits: Optional[Dict[str, Any]] = None, mesh_path: Optional[Sequence[str]] = None,
+             mesh_capsules: Optional[int] = None) -> Dict[str, Any]:
     """A serial arm from a URDF: a built-in model (builtin="panda") or a file (urdf_file=..., builtin=None), the
     chain base_link .. tip_link (or an SRDF's chain group: srdf_file=..., group=...; the SRDF's disabled collisions
     apply too), its base placed at position with the unit quaternion orientation (w, x, y, z); limits
-    ({"velocity": ..., "acceleration": ...}, a number or one per joint) for time_parameterize()."""
+    ({"velocity": ..., "acceleration": ...}, a number or one per joint) for time_parameterize(). Mesh collision
+    geometry is found from the URDF's folder (relative paths, and package://NAME/... in a folder above it named
+    NAME) and in the folders of mesh_path, and is fitted by at most mesh_capsules capsules a mesh (default 4)."""
     robot: Dict[str, Any] = {"name": name, "kind": "urdf_arm", "base_pose": _pose(position, orientation),
                              "start": list(start), "goal": list(goal)}
     if srdf_file is not None:
@@ -81,11 +84,24 @@ def urdf_arm(name: str, start: Sequence[float], goal: Sequence[float], builtin: 
         robot["base_link"], robot["tip_link"] = base_link, tip_link
     if limits is not None:
         robot["limits"] = dict(limits)
+    if mesh_path is not None:
+        robot["mesh_path"] = [_os.path.abspath(folder) for folder in mesh_path]
+    if mesh_capsules is not None:
+        robot["mesh_capsules"] = mesh_capsules
     if urdf_file is not None:
         robot["urdf_file"] = _os.path.abspath(urdf_file)
     else:
         robot["builtin_urdf"] = builtin
     return robot
+
+
+def mesh(file: str, scale: Union[float, Sequence[float]] = 1., position: Sequence[float] = (0, 0, 0),
+         orientation: Sequence[float] = (1, 0, 0, 0), fit_resolution: int = 64, name: str = "") -> Dict[str, Any]:
+    """A mesh obstacle (STL, OBJ, COLLADA, ...) scaled by a factor or one per axis: exact for validation,
+    planned around as boxes fitted with fit_resolution cells along its longest side."""
+    return {"name": name, "shape": "mesh", "file": _os.path.abspath(file),
+            "scale": scale if isinstance(scale, (int, float)) else list(scale), "fit_resolution": fit_resolution,
+            **_pose(position, orientation)}
 
 
 def box(size: Sequence[float], position: Sequence[float] = (0, 0, 0), orientation: Sequence[float] = (1, 0, 0, 0),
@@ -113,7 +129,7 @@ def cylinder(radius: float, length: float, position: Sequence[float] = (0, 0, 0)
 def team(robots: Sequence[Dict[str, Any]], obstacles: Sequence[Dict[str, Any]] = (), resolution: float = 128.0,
          name: str = "team") -> Problem:
     """A problem from robots (disc(), planar_arm(), urdf_arm()) among obstacles (box(), box2d(), sphere(),
-    cylinder()), checked like a scenario file (unique names, valid and collision-free starts and goals)."""
+    cylinder(), mesh()), checked like a scenario file (unique names, valid and collision-free starts and goals)."""
     text = _json.dumps({"format": "ompl_parc.scenario", "version": 1, "name": name, "resolution": resolution,
                         "obstacles": [{k: v for k, v in o.items() if k != "name" or v} for o in obstacles],
                         "robots": list(robots)})
