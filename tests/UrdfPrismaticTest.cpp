@@ -4,10 +4,11 @@
    and two such arms planned by ARC and checked by the independent validator. */
 #include "TestProblems.h"
 
+#include "ompl_parc/io/ScenarioFile.h"
+#include "ompl_parc/planners/ARC.h"
 #include "ompl_parc/robots/UrdfArm.h"
 #include "ompl_parc/validation/DisplacementBound.h"
 #include "ompl_parc/validation/SolutionValidator.h"
-#include "ompl_parc/planners/ARC.h"
 
 #include <ompl/util/Exception.h>
 
@@ -349,4 +350,12 @@ TEST(UrdfPrismatic, TwoGripperArmsArePlannedAndTheValidatorAgrees)
     EXPECT_GT(planner.getStatistics().repairs, 0u);
     const auto report = SolutionValidator(problem).validate(planner.getPlan());
     EXPECT_TRUE(report.valid) << report.message;
+
+    // Through a scenario file and back: the same coordinates, the mimic finger included, and the plan still valid.
+    const MultiRobotProblem again = ScenarioFile::fromJson(ScenarioFile::toJson(problem));
+    const auto arm = std::dynamic_pointer_cast<const UrdfArm>(again.getSpaceInformation()->getRobot(1));
+    ASSERT_NE(arm, nullptr);
+    EXPECT_EQ(arm->getCoordinateNames(), team[1]->getCoordinateNames());
+    EXPECT_EQ(arm->getJoints().size(), 5u);
+    EXPECT_TRUE(SolutionValidator(again).validate(planner.getPlan()).valid);
 }
