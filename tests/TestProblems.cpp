@@ -180,3 +180,39 @@ ompl_parc::MultiRobotPlan ompl_parc::test::straightLinePlan(const MultiRobotProb
         plan.setRobotPath(r, straightLine(problem.getStart(r), problem.getGoal(r), si.getResolution()));
     return plan;
 }
+
+std::string ompl_parc::test::gripperArmUrdf(const std::string &slideAxis, const std::string &mimic,
+                                            const std::string &finger2Upper)
+{
+    return R"(<robot name="gripper_arm">
+  <link name="base"><collision><geometry><sphere radius="0.08"/></geometry></collision></link>
+  <link name="column"><collision><origin xyz="0 0 0.2"/><geometry><cylinder radius="0.04" length="0.3"/></geometry></collision></link>
+  <link name="carriage"><collision><geometry><box size="0.08 0.08 0.08"/></geometry></collision></link>
+  <link name="forearm"><collision><origin xyz="0 0 0.15"/><geometry><cylinder radius="0.03" length="0.3"/></geometry></collision></link>
+  <link name="hand"><collision><geometry><box size="0.04 0.16 0.03"/></geometry></collision></link>
+  <link name="finger1"><collision><origin xyz="0 0 0.03"/><geometry><box size="0.02 0.02 0.06"/></geometry></collision></link>
+  <link name="finger2"><collision><origin xyz="0 0 0.03"/><geometry><box size="0.02 0.02 0.06"/></geometry></collision></link>
+  <joint name="turn" type="revolute"><parent link="base"/><child link="column"/><origin xyz="0 0 0.05"/>
+    <axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="1" velocity="1.5"/></joint>
+  <joint name="slide" type="prismatic"><parent link="column"/><child link="carriage"/><origin xyz="0 0 0.5"/>
+    <axis xyz=")" +
+           slideAxis +
+           R"("/><limit lower="-0.2" upper="0.3" effort="1" velocity="0.5"/></joint>
+  <joint name="bend" type="revolute"><parent link="carriage"/><child link="forearm"/><origin xyz="0.05 0 0"/>
+    <axis xyz="0 1 0"/><limit lower="-2" upper="2" effort="1" velocity="1"/></joint>
+  <joint name="wrist" type="fixed"><parent link="forearm"/><child link="hand"/><origin xyz="0 0 0.3"/></joint>
+  <joint name="finger_joint1" type="prismatic"><parent link="hand"/><child link="finger1"/>
+    <origin xyz="0 0.01 0.015"/><axis xyz="0 1 0"/><limit lower="0" upper="0.05" effort="1" velocity="0.2"/></joint>
+  <joint name="finger_joint2" type="prismatic"><parent link="hand"/><child link="finger2"/>
+    <origin xyz="0 -0.01 0.015"/><axis xyz="0 -1 0"/><limit lower="0" upper=")" +
+           finger2Upper + R"(" effort="1" velocity="0.2"/>)" + mimic + R"(</joint>
+</robot>)";
+}
+
+std::vector<double> ompl_parc::test::randomConfig(const Robot &robot, std::mt19937 &rng)
+{
+    std::vector<double> q(robot.getDimension());
+    for (unsigned int d = 0; d < q.size(); ++d)
+        q[d] = std::uniform_real_distribution<double>(robot.getBounds().low[d], robot.getBounds().high[d])(rng);
+    return q;
+}

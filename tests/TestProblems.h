@@ -78,6 +78,18 @@ namespace ompl_parc::test
     /** \brief Robot \e robot's configuration at timestep \e t as a vector. */
     std::vector<double> config(const MultiRobotPlan &plan, std::size_t robot, std::size_t t);
 
+    /** \brief A configuration of \e robot drawn uniformly within its bounds. */
+    std::vector<double> randomConfig(const Robot &robot, std::mt19937 &rng);
+
+    /** \brief A URDF arm with every joint kind UrdfArm reads, chain "base" .. "finger1": a column turning about z
+        (joint "turn"), a carriage sliding along \e slideAxis of the column (prismatic "slide", -0.2 .. 0.3 m), a
+        forearm bending about y ("bend"), a hand fixed to it, a finger sliding along y of the hand (prismatic
+        "finger_joint1", 0 .. 0.05 m, the tip link) and a second finger off the chain sliding along -y that mimics
+        it (\e mimic: the `<mimic>` element; its own limit is 0 .. \e finger2Upper). */
+    std::string gripperArmUrdf(const std::string &slideAxis = "1 0 0",
+                               const std::string &mimic = "<mimic joint=\"finger_joint1\"/>",
+                               const std::string &finger2Upper = "0.05");
+
     /** \brief Replace robot \e a's path from timestep \e t on by robot \e b's (so that a and b collide from t on,
         up to b's arrival): the change an invalidation of (a, t) must account for. */
     void followFrom(MultiRobotPlan &plan, std::size_t a, std::size_t b, std::size_t t);

@@ -2,8 +2,11 @@
    double-precision check (Robot::checkValidity, itself checked against FCL in EnvironmentCheckTest): it never
    calls a configuration valid that the double check rejects, also a hair inside a collision, where rounding
    matters most; it rarely rejects more (its inflation); batches answer like single configurations; and the
-   robot's batched motion validator never accepts a motion OMPL's DiscreteMotionValidator rejects. Two worlds:
-   the Panda cage, and a Panda far from the origin (larger coordinates, larger rounding) among random obstacles. */
+   robot's batched motion validator never accepts a motion OMPL's DiscreteMotionValidator rejects. Three worlds:
+   the Panda cage, a Panda far from the origin (larger coordinates, larger rounding) among random obstacles, and an
+   arm with prismatic joints and a mimic finger off the chain among random obstacles. */
+#include "TestProblems.h"
+
 #include "ompl_parc/robots/BuiltinModels.h"
 #include "ompl_parc/robots/UrdfArm.h"
 #include "ompl_parc/scenarios/PandaCage.h"
@@ -27,14 +30,6 @@ namespace
     constexpr std::size_t SAMPLES = 100000;
 #endif
 
-    std::vector<double> randomConfig(const Robot &robot, std::mt19937 &rng)
-    {
-        std::vector<double> q(robot.getDimension());
-        for (unsigned int d = 0; d < q.size(); ++d)
-            q[d] = std::uniform_real_distribution<double>(robot.getBounds().low[d], robot.getBounds().high[d])(rng);
-        return q;
-    }
-
     bool exactlyValid(const Robot &robot, const std::vector<double> &q)
     {
         return robot.checkValidity(q.data()) == Robot::Validity::VALID;
@@ -47,11 +42,10 @@ namespace
         return problem.getSpaceInformation()->getRobot(0);
     }
 
-    /** A Panda based at (40, -25, 3), pitched, among 40 random boxes, cylinders and spheres within its reach
-        (none touching its base). */
-    std::shared_ptr<const Robot> farPanda()
+    /** 40 random boxes, cylinders and spheres with centres within \e spread of \e centre (per coordinate), none
+        within half that of its vertical axis (where an arm's base link stands). */
+    std::shared_ptr<Environment> obstaclesAround(const Eigen::Vector3d &centre, double spread)
     {
-        const Eigen::Vector3d base(40., -25., 3.);
         auto env = std::make_shared<Environment>();
         std::mt19937 rng(11);
         std::uniform_real_distribution<double> unit(-1., 1.), size(0.03, 0.25);
@@ -61,15 +55,33 @@ namespace
             o.name = "obstacle" + std::to_string(k);
             o.shape = static_cast<Obstacle::Shape>(k % 3);
             o.size = Eigen::Vector3d(size(rng), size(rng), size(rng));
-            Eigen::Vector3d offset(unit(rng), unit(rng), unit(rng));
-            if (offset.head<2>().norm() < 0.5)  // keep clear of the base link
-                offset.head<2>() *= 0.5 / std::max(offset.head<2>().norm(), 1e-3);
-            o.pose = Eigen::Translation3d(base + offset) *
+            Eigen::Vector3d offset = spread * Eigen::Vector3d(unit(rng), unit(rng), unit(rng));
+            if (offset.head<2>().norm() < 0.5 * spread)  // keep clear of the base link
+                offset.head<2>() *= 0.5 * spread / std::max(offset.head<2>().norm(), 1e-3);
+            o.pose = Eigen::Translation3d(centre + offset) *
                      Eigen::AngleAxisd(unit(rng) * M_PI, Eigen::Vector3d(unit(rng), unit(rng), 1.).normalized());
             env->addObstacle(o);
         }
-        return std::make_shared<UrdfArm>("far", env, models::pandaUrdf(), "panda_link0", "panda_link8",
-                                         UrdfArm::pose(base.x(), base.y(), base.z(), 0.3, -0.2, 1.));
+        return env;
+    }
+
+    /** A Panda based at (40, -25, 3), pitched, among obstacles around its base (within its reach, none touching
+        its base). */
+    std::shared_ptr<const Robot> farPanda()
+    {
+        const Eigen::Vector3d base(40., -25., 3.);
+        return std::make_shared<UrdfArm>("far", obstaclesAround(base, 1.), models::pandaUrdf(), "panda_link0",
+                                         "panda_link8", UrdfArm::pose(base.x(), base.y(), base.z(), 0.3, -0.2, 1.));
+    }
+
+    /** test::gripperArmUrdf() (prismatic joints, one sliding along a skew axis, and a mimic finger off the chain)
+        based at (-7, 12, 1), rolled, among obstacles within its smaller reach. */
+    std::shared_ptr<const Robot> gripperArm()
+    {
+        const Eigen::Vector3d base(-7., 12., 1.);
+        return std::make_shared<UrdfArm>("gripper", obstaclesAround(base + Eigen::Vector3d(0., 0., 0.5), 0.6),
+                                         test::gripperArmUrdf("1 0.5 0.2"), "base", "finger1",
+                                         UrdfArm::pose(base.x(), base.y(), base.z(), 0.2, 0., -0.7));
     }
 
     /** Random configurations: no collision of the double check missed, few extra rejections. */
@@ -79,7 +91,7 @@ namespace
         std::size_t invalid = 0, missed = 0, extra = 0;
         for (std::size_t s = 0; s < SAMPLES; ++s)
         {
-            const std::vector<double> q = randomConfig(robot, rng);
+            const std::vector<double> q = test::randomConfig(robot, rng);
             const bool exact = exactlyValid(robot, q), lanes = robot.allValid(q.data(), 1);
             invalid += exact ? 0 : 1;
             missed += !exact && lanes ? 1 : 0;
@@ -102,7 +114,7 @@ namespace
         const unsigned int d = robot.getDimension();
         while (tested < 2000)
         {
-            std::vector<double> valid = randomConfig(robot, rng), invalid = randomConfig(robot, rng);
+            std::vector<double> valid = test::randomConfig(robot, rng), invalid = test::randomConfig(robot, rng);
             if (!exactlyValid(robot, valid) || exactlyValid(robot, invalid))
                 continue;
             std::vector<double> mid(d);
@@ -131,6 +143,12 @@ TEST(UrdfArmLanes, FarPandaAmongRandomObstaclesNeverMissesACollisionOfTheDoubleC
     expectBoundaryRejected(*farPanda(), "far_panda");
 }
 
+TEST(UrdfArmLanes, PrismaticAndMimicJointsNeverMissACollisionOfTheDoubleCheck)
+{
+    expectConservative(*gripperArm(), "gripper_arm");
+    expectBoundaryRejected(*gripperArm(), "gripper_arm");
+}
+
 TEST(UrdfArmLanes, BatchesAnswerLikeTheirConfigurationsOneByOne)
 {
     const auto robot = cagedPanda();
@@ -145,9 +163,9 @@ TEST(UrdfArmLanes, BatchesAnswerLikeTheirConfigurationsOneByOne)
         for (std::size_t k = 0; k < count; ++k)
         {
             // mostly valid configurations, so that batches are often all valid
-            std::vector<double> q = randomConfig(*robot, rng);
+            std::vector<double> q = test::randomConfig(*robot, rng);
             for (int retry = 0; retry < 4 && trial % 3 != 0 && !robot->allValid(q.data(), 1); ++retry)
-                q = randomConfig(*robot, rng);
+                q = test::randomConfig(*robot, rng);
             all = all && robot->allValid(q.data(), 1);
             flat.insert(flat.end(), q.begin(), q.end());
         }
@@ -160,7 +178,7 @@ TEST(UrdfArmLanes, BatchesAnswerLikeTheirConfigurationsOneByOne)
 
 TEST(UrdfArmLanes, BatchedMotionValidatorNeverAcceptsWhatTheDiscreteOneRejects)
 {
-    for (const auto &robot : {cagedPanda(), farPanda()})
+    for (const auto &robot : {cagedPanda(), farPanda(), gripperArm()})
     {
         const auto &si = robot->getSpaceInformation();
         ob::DiscreteMotionValidator discrete(si.get());
@@ -169,7 +187,7 @@ TEST(UrdfArmLanes, BatchedMotionValidatorNeverAcceptsWhatTheDiscreteOneRejects)
         std::size_t discreteRejects = 0, extra = 0, motions = 0;
         while (motions < 3000)
         {
-            const std::vector<double> qa = randomConfig(*robot, rng), step = randomConfig(*robot, rng);
+            const std::vector<double> qa = test::randomConfig(*robot, rng), step = test::randomConfig(*robot, rng);
             if (!robot->isValid(qa.data()))
                 continue;
             std::vector<double> qb(qa);

@@ -157,16 +157,16 @@ TEST(UrdfArm, ClearErrorsNameTheElement)
     expectError("<robot name=\"broken\"><link name=\"a\"></robot>", "malformed URDF");
     // urdfdom rejects a revolute joint without <limit>; its first error is the message's one line.
     expectError(smallArm("revolute", ""), "malformed URDF: Joint [j2] is of type REVOLUTE but it does not specify");
-    expectError(smallArm("prismatic"), "joint 'j2'");
+    expectError(smallArm("floating"), "joint 'j2' is not revolute, continuous, prismatic or fixed (unsupported)");
     expectError(smallArm("revolute", "<limit lower=\"1\" upper=\"-1\" effort=\"1\" velocity=\"1\"/>"), "joint 'j2'");
     expectError(smallArm("revolute", "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>",
                          "<mesh filename=\"upper.stl\"/>"),
                 "link 'upper'");
     expectError(smallArm("revolute", "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>",
                          "<box size=\"0.1 0.1 0.4\"/>",
-                         "<link name=\"side\"/><joint name=\"branch\" type=\"revolute\"><parent link=\"upper\"/>"
-                         "<child link=\"side\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>"),
-                "non-serial chain: movable joint 'branch'");
+                         "<link name=\"side\"/><joint name=\"branch\" type=\"floating\"><parent link=\"upper\"/>"
+                         "<child link=\"side\"/></joint>"),
+                "joint 'branch' is not revolute, continuous, prismatic or fixed");
     expectError(smallArm(), "no tip link 'nowhere'", "base", "nowhere");
     expectError(smallArm(), "tip link 'base' is not below base link 'tip'", "tip", "base");
     expectError(smallArm(), "chain 'lower' .. 'tip' has no movable joint", "lower", "tip");
@@ -324,11 +324,11 @@ TEST(UrdfArm, EveryUrdfWithAnUnreadableCollisionElementIsRefused)
     EXPECT_EQ(refused, 3 * cases.size());
 }
 
-TEST(UrdfArm, MimicJointsAndNonFiniteJointsAreRefused)
+TEST(UrdfArm, MimicsOfUnknownJointsAndNonFiniteJointsAreRefused)
 {
     expectError(
-        smallArm("revolute", "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/><mimic joint=\"j1\"/>"),
-        "joint 'j2' mimics joint 'j1'");
+        smallArm("revolute", "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/><mimic joint=\"nowhere\"/>"),
+        "joint 'j2' mimics joint 'nowhere', which leads to unknown joint 'nowhere'");
     for (const std::string &v : {"nan", "inf", "1e999", "0.5x"})
     {
         SCOPED_TRACE(v);

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <set>
 
 namespace
@@ -287,37 +288,174 @@ namespace
         out.push_back({frame, shape, -1});
     }
 
-    /** Primitives of \e root and of the links hanging off it by fixed joints (not \e onChain ones). Iterative
-        (a chain of thousands of fixed links must not overflow the stack), and each link is visited once: a URDF
-        whose joints lead back to a link already visited is refused. */
+    /** The range of movable joint \e joint: its <limit> (revolute and prismatic: finite, lower < upper), or
+        [-pi, pi] for a continuous joint. */
+    std::pair<double, double> jointRange(const urdf::Joint &joint)
+    {
+        if (joint.type == urdf::Joint::CONTINUOUS)
+            return {-M_PI, M_PI};
+        const std::string what =
+            (joint.type == urdf::Joint::PRISMATIC ? "prismatic joint '" : "revolute joint '") + joint.name + "'";
+        if (!joint.limits)
+            throw ompl::Exception(CONTEXT, what + " has no <limit>");
+        if (!std::isfinite(joint.limits->lower) || !std::isfinite(joint.limits->upper))
+            throw ompl::Exception(CONTEXT, what + " has a non-finite <limit>");
+        if (!(joint.limits->lower < joint.limits->upper))
+            throw ompl::Exception(CONTEXT, what + " has an empty <limit>");
+        return {joint.limits->lower, joint.limits->upper};
+    }
+
+    /** The URDF's velocity limit of \e joint, or 0 if it gives none (or none that is positive and finite). */
+    double jointVelocity(const urdf::Joint &joint)
+    {
+        return joint.limits && std::isfinite(joint.limits->velocity) && joint.limits->velocity > 0.
+                   ? joint.limits->velocity
+                   : 0.;
+    }
+
+    /** Movable joint \e joint (revolute, continuous or prismatic; others are refused) hanging from frame \e parent
+        at \e origin; its coordinate is left to the caller. */
+    ompl_parc::UrdfArm::Joint movableJoint(const urdf::Joint &joint, std::size_t parent,
+                                           const Eigen::Isometry3d &origin)
+    {
+        if (joint.type != urdf::Joint::REVOLUTE && joint.type != urdf::Joint::CONTINUOUS &&
+            joint.type != urdf::Joint::PRISMATIC)
+            throw ompl::Exception(
+                CONTEXT, "joint '" + joint.name + "' is not revolute, continuous, prismatic or fixed (unsupported)");
+        if (!origin.matrix().allFinite())
+            throw ompl::Exception(CONTEXT, "joint '" + joint.name + "' has a non-finite <origin>");
+        const Eigen::Vector3d axis(joint.axis.x, joint.axis.y, joint.axis.z);
+        if (!axis.allFinite() || !(axis.norm() > 1e-9))
+            throw ompl::Exception(CONTEXT, "joint '" + joint.name + "' has a zero or non-finite <axis>");
+        ompl_parc::UrdfArm::Joint out;
+        out.name = joint.name;
+        out.prismatic = joint.type == urdf::Joint::PRISMATIC;
+        out.parent = parent;
+        out.origin = origin;
+        out.axis = axis.normalized();
+        return out;
+    }
+
+    /** The value movable joint \e joint off the chain is held at, or nothing if it mimics (through mimics of
+        mimics) a joint of the chain, \e onChain, or its mimics cannot be followed (resolveMimic() reports why). A
+        joint that mimics nothing is held at 0 clamped into its <limit> (a gripper's fingers while an arm's chain is
+        planned, as MoveIt keeps joints outside the group planned); one that mimics a held joint follows its value. */
+    std::optional<double> heldValue(const urdf::ModelInterface &model, const urdf::Joint &joint,
+                                    const std::vector<const urdf::Joint *> &onChain)
+    {
+        double multiplier = 1., offset = 0.;  // joint = multiplier * current + offset
+        std::set<const urdf::Joint *> seen;
+        const urdf::Joint *current = &joint;
+        for (; current->mimic; current = model.getJoint(current->mimic->joint_name).get())
+        {
+            if (!seen.insert(current).second || !model.getJoint(current->mimic->joint_name))
+                return std::nullopt;
+            offset += multiplier * current->mimic->offset;
+            multiplier *= current->mimic->multiplier;
+        }
+        if (std::find(onChain.begin(), onChain.end(), current) != onChain.end() || current->type == urdf::Joint::FIXED)
+            return std::nullopt;
+        double value = 0.;
+        if (current->type != urdf::Joint::CONTINUOUS && current->limits)
+            value = std::clamp(0., current->limits->lower, current->limits->upper);
+        return multiplier * value + offset;
+    }
+
+    /** Primitives of \e root (in frame \e frame) and of the links hanging off it by fixed joints (not \e onChain
+        ones), by joints held still (heldValue()) or by mimic joints of the chain: each of the last gets a frame of
+        its own, appended to \e joints (its URDF joint to \e urdfJoints). Iterative (a chain of thousands of fixed
+        links must not overflow the stack), and each link is visited once: a URDF whose joints lead back to a link
+        already visited is refused. */
     void collectPrimitives(const urdf::ModelInterface &model, const urdf::Link &root, std::size_t frame,
                            const Eigen::Isometry3d &rootPose, const std::vector<const urdf::Joint *> &onChain,
                            const ompl_parc::UrdfArm::MeshOptions &options, std::set<const urdf::Link *> &visited,
                            std::vector<ompl_parc::UrdfArm::Primitive> &out,
-                           std::vector<ompl_parc::UrdfArm::LinkMesh> &meshes)
+                           std::vector<ompl_parc::UrdfArm::LinkMesh> &meshes,
+                           std::vector<ompl_parc::UrdfArm::Joint> &joints, std::vector<const urdf::Joint *> &urdfJoints)
     {
-        std::vector<std::pair<const urdf::Link *, Eigen::Isometry3d>> pending = {{&root, rootPose}};
+        struct Hanging
+        {
+            const urdf::Link *link;
+            std::size_t frame;
+            Eigen::Isometry3d pose;
+        };
+        std::vector<Hanging> pending = {{&root, frame, rootPose}};
         while (!pending.empty())
         {
-            const auto [link, linkPose] = pending.back();
+            const Hanging at = pending.back();
             pending.pop_back();
-            if (!visited.insert(link).second)
-                throw ompl::Exception(CONTEXT, "the URDF's joints form a loop through link '" + link->name + "'");
-            for (const auto &collision : link->collision_array)
-                addPrimitives(*link, *collision, frame, linkPose, options, out, meshes);
-            for (const auto &joint : link->child_joints)
+            if (!visited.insert(at.link).second)
+                throw ompl::Exception(CONTEXT, "the URDF's joints form a loop through link '" + at.link->name + "'");
+            for (const auto &collision : at.link->collision_array)
+                addPrimitives(*at.link, *collision, at.frame, at.pose, options, out, meshes);
+            for (const auto &joint : at.link->child_joints)
             {
                 if (std::find(onChain.begin(), onChain.end(), joint.get()) != onChain.end())
                     continue;
-                if (joint->type != urdf::Joint::FIXED)
-                    throw ompl::Exception(CONTEXT, "non-serial chain: movable joint '" + joint->name +
-                                                       "' branches off link '" + link->name + "'");
                 const auto child = model.getLink(joint->child_link_name);
                 if (!child)
                     throw ompl::Exception(CONTEXT, "joint '" + joint->name + "' has no child link");
-                pending.emplace_back(child.get(), linkPose * toIsometry(joint->parent_to_joint_origin_transform));
+                const Eigen::Isometry3d origin = at.pose * toIsometry(joint->parent_to_joint_origin_transform);
+                if (joint->type == urdf::Joint::FIXED)
+                {
+                    pending.push_back({child.get(), at.frame, origin});
+                    continue;
+                }
+                ompl_parc::UrdfArm::Joint moving = movableJoint(*joint, at.frame, origin);
+                if (const auto held = heldValue(model, *joint, onChain))
+                {
+                    const Eigen::Isometry3d motion =
+                        moving.prismatic ? Eigen::Isometry3d(Eigen::Translation3d(*held * moving.axis))
+                                         : Eigen::Isometry3d(Eigen::AngleAxisd(*held, moving.axis));
+                    pending.push_back({child.get(), at.frame, origin * motion});
+                    continue;
+                }
+                joints.push_back(moving);
+                urdfJoints.push_back(joint.get());
+                pending.push_back({child.get(), joints.size(), Eigen::Isometry3d::Identity()});
             }
         }
+    }
+
+    /** Mimic joint \e joint's value as multiplier * q[coordinate] + offset of the coordinate it follows, through
+        mimics of mimics; \e coordinates are the chain's movable joints that mimic nothing, by name. */
+    void resolveMimic(const urdf::ModelInterface &model, const urdf::Joint &joint,
+                      const std::map<std::string, unsigned int> &coordinates, const std::string &chainName,
+                      ompl_parc::UrdfArm::Joint &out)
+    {
+        const std::string what = "joint '" + joint.name + "' mimics joint '" + joint.mimic->joint_name + "'";
+        double multiplier = 1., offset = 0.;  // joint = multiplier * current + offset
+        std::set<const urdf::Joint *> seen = {&joint};
+        for (const urdf::Joint *current = &joint; current->mimic;)
+        {
+            const urdf::JointMimic &mimic = *current->mimic;
+            if (!std::isfinite(mimic.multiplier) || !std::isfinite(mimic.offset))
+                throw ompl::Exception(CONTEXT, "joint '" + current->name + "' has a non-finite <mimic>");
+            offset += multiplier * mimic.offset;
+            multiplier *= mimic.multiplier;
+            const auto target = model.getJoint(mimic.joint_name);
+            if (!target)
+                throw ompl::Exception(CONTEXT, what + ", which leads to unknown joint '" + mimic.joint_name + "'");
+            if (!seen.insert(target.get()).second)
+                throw ompl::Exception(CONTEXT, what + ": the mimics form a loop through joint '" + target->name + "'");
+            if (target->type != urdf::Joint::REVOLUTE && target->type != urdf::Joint::CONTINUOUS &&
+                target->type != urdf::Joint::PRISMATIC)
+                throw ompl::Exception(CONTEXT,
+                                      what + ", which leads to joint '" + target->name + "', not a movable joint");
+            current = target.get();
+            if (!current->mimic)
+            {
+                const auto coordinate = coordinates.find(current->name);
+                if (coordinate == coordinates.end())
+                    throw ompl::Exception(CONTEXT, what + ", which leads to joint '" + current->name +
+                                                       "', not a movable joint of chain " + chainName);
+                out.coordinate = coordinate->second;
+            }
+        }
+        if (!std::isfinite(multiplier) || !std::isfinite(offset))
+            throw ompl::Exception(CONTEXT, "joint '" + joint.name + "' has a non-finite <mimic>");
+        out.multiplier = multiplier;
+        out.offset = offset;
     }
 }  // namespace
 
@@ -368,6 +506,9 @@ ompl_parc::UrdfArm::Chain ompl_parc::UrdfArm::parseChain(const std::string &urdf
 
     Chain chain;
     std::vector<double> low, high;
+    // The URDF joint of each of chain.joints; the coordinates by joint name.
+    std::vector<const urdf::Joint *> urdfJoints;
+    std::map<std::string, unsigned int> coordinates;
     // Chain link frames: frame k is the child link of the k-th movable joint; a link reached through fixed
     // joints sits at `pending` in the frame of the last movable joint's child.
     Eigen::Isometry3d pending = Eigen::Isometry3d::Identity();
@@ -377,63 +518,77 @@ ompl_parc::UrdfArm::Chain ompl_parc::UrdfArm::parseChain(const std::string &urdf
         pending = pending * toIsometry(joint->parent_to_joint_origin_transform);
         if (!pending.matrix().allFinite())
             throw ompl::Exception(CONTEXT, "joint '" + joint->name + "' has a non-finite <origin>");
-        if (joint->mimic)
-            throw ompl::Exception(CONTEXT, "joint '" + joint->name + "' mimics joint '" + joint->mimic->joint_name +
-                                               "': mimic joints are not supported (planning it as an independent "
-                                               "joint would be wrong)");
         if (joint->type != urdf::Joint::FIXED)
         {
-            if (joint->type == urdf::Joint::REVOLUTE)
+            chain.joints.push_back(movableJoint(*joint, chain.joints.size(), pending));
+            urdfJoints.push_back(joint);
+            if (!joint->mimic)
             {
-                if (!joint->limits)
-                    throw ompl::Exception(CONTEXT, "revolute joint '" + joint->name + "' has no <limit>");
-                if (!(joint->limits->lower < joint->limits->upper))
-                    throw ompl::Exception(CONTEXT, "revolute joint '" + joint->name + "' has an empty <limit>");
-                if (!std::isfinite(joint->limits->lower) || !std::isfinite(joint->limits->upper))
-                    throw ompl::Exception(CONTEXT, "revolute joint '" + joint->name + "' has a non-finite <limit>");
-                low.push_back(joint->limits->lower);
-                high.push_back(joint->limits->upper);
+                const auto [lower, upper] = jointRange(*joint);
+                chain.joints.back().coordinate = static_cast<unsigned int>(low.size());
+                coordinates.emplace(joint->name, static_cast<unsigned int>(low.size()));
+                low.push_back(lower);
+                high.push_back(upper);
+                chain.names.push_back(joint->name);
+                const double velocity = jointVelocity(*joint);
+                chain.velocities.push_back(velocity > 0. ? velocity : 1.);
             }
-            else if (joint->type == urdf::Joint::CONTINUOUS)
-            {
-                low.push_back(-M_PI);
-                high.push_back(M_PI);
-            }
-            else
-                throw ompl::Exception(CONTEXT,
-                                      "joint '" + joint->name + "' is not revolute, continuous or fixed (unsupported)");
-            const Eigen::Vector3d axis(joint->axis.x, joint->axis.y, joint->axis.z);
-            if (!axis.allFinite() || !(axis.norm() > 1e-9))
-                throw ompl::Exception(CONTEXT, "joint '" + joint->name + "' has a zero or non-finite <axis>");
-            chain.offsets.push_back(pending);
-            chain.axes.push_back(axis.normalized());
-            chain.names.push_back(joint->name);
-            const bool hasVelocity = joint->limits && std::isfinite(joint->limits->velocity) &&
-                                     joint->limits->velocity > 0.;
-            chain.velocities.push_back(hasVelocity ? joint->limits->velocity : 1.);
             pending.setIdentity();
         }
-        linkPoses.emplace_back(chain.offsets.size(), pending);
+        linkPoses.emplace_back(chain.joints.size(), pending);
     }
-    if (chain.offsets.empty())
-        throw ompl::Exception(CONTEXT, "chain '" + baseLink + "' .. '" + tipLink + "' has no movable joint");
+    const std::string chainName = "'" + baseLink + "' .. '" + tipLink + "'";
+    if (chain.joints.empty())
+        throw ompl::Exception(CONTEXT, "chain " + chainName + " has no movable joint");
+    chain.chainJoints = chain.joints.size();
     chain.tipOffset = pending;
     for (const auto &[linkName, link] : model->links_)
         chain.linkNames.insert(linkName);
-    chain.limits.resize(low.size());
-    chain.limits.low = low;
-    chain.limits.high = high;
 
-    // The chain's links, base first, each with what hangs off it by fixed joints.
+    // The chain's links, base first, each with what hangs off it by fixed joints and by mimic joints.
     std::vector<const urdf::Link *> links = {base.get()};
     for (const urdf::Joint *joint : joints)
         links.push_back(model->getLink(joint->child_link_name).get());
     std::set<const urdf::Link *> visited;
     for (std::size_t k = 0; k < links.size(); ++k)
         collectPrimitives(*model, *links[k], linkPoses[k].first, linkPoses[k].second, joints, options, visited,
-                          chain.primitives, chain.meshes);
+                          chain.primitives, chain.meshes, chain.joints, urdfJoints);
     if (chain.primitives.empty())
-        throw ompl::Exception(CONTEXT, "chain '" + baseLink + "' .. '" + tipLink + "' has no collision geometry");
+        throw ompl::Exception(CONTEXT, "chain " + chainName + " has no collision geometry");
+
+    // Mimic joints follow a coordinate; their limits narrow its range (and their velocity limits its velocity
+    // limit), so that a planned configuration keeps every joint within its limits.
+    for (std::size_t k = 0; k < chain.joints.size(); ++k)
+    {
+        const urdf::Joint &joint = *urdfJoints[k];
+        if (!joint.mimic)
+            continue;
+        Joint &mimic = chain.joints[k];
+        resolveMimic(*model, joint, coordinates, chainName, mimic);
+        const unsigned int c = mimic.coordinate;
+        const double velocity = jointVelocity(joint);
+        if (velocity > 0. && mimic.multiplier != 0.)
+            chain.velocities[c] = std::min(chain.velocities[c], velocity / std::abs(mimic.multiplier));
+        if (joint.type == urdf::Joint::CONTINUOUS)
+            continue;
+        const auto [lower, upper] = jointRange(joint);
+        if (mimic.multiplier == 0.)
+        {
+            if (!(mimic.offset >= lower && mimic.offset <= upper))
+                throw ompl::Exception(CONTEXT, "mimic joint '" + joint.name + "' stays at " +
+                                                   std::to_string(mimic.offset) + ", outside its <limit>");
+            continue;
+        }
+        const double a = (lower - mimic.offset) / mimic.multiplier, b = (upper - mimic.offset) / mimic.multiplier;
+        low[c] = std::max(low[c], std::min(a, b));
+        high[c] = std::min(high[c], std::max(a, b));
+        if (!(low[c] < high[c]))
+            throw ompl::Exception(CONTEXT, "mimic joint '" + joint.name + "' leaves joint '" + chain.names[c] +
+                                               "' no range within both joints' <limit>s");
+    }
+    chain.limits.resize(low.size());
+    chain.limits.low = low;
+    chain.limits.high = high;
     return chain;
 }
 
@@ -455,6 +610,8 @@ ompl_parc::UrdfArm::UrdfArm(std::string name, EnvironmentPtr environment, Chain 
       basePose_(basePose),
       srdf_(std::move(srdf)),
       velocities_(std::move(chain.velocities)),
+      joints_(std::move(chain.joints)),
+      chainJoints_(chain.chainJoints),
       jointNames_(std::move(chain.names)),
       tipOffset_(chain.tipOffset),
       primitives_(std::move(chain.primitives)),
@@ -465,16 +622,17 @@ ompl_parc::UrdfArm::UrdfArm(std::string name, EnvironmentPtr environment, Chain 
             if (chain.linkNames.count(link) == 0)
                 throw ompl::Exception(CONTEXT, "the SRDF names link '" + link + "', which the URDF does not have");
     // Aligned frame k = URDF frame k turned by A_k, where A_k takes z onto joint k's axis u_k. Since
-    // R(u_k, q) = A_k Rz(q) A_k^T, frame k = frame k-1 * O_k * R(u_k, q) becomes, for aligned frames,
-    // aligned k = aligned k-1 * (A_{k-1}^T O_k A_k) * Rz(q).
+    // R(u_k, q) = A_k Rz(q) A_k^T and T(u_k q) = A_k T(z q) A_k^T, frame k = frame p * O_k * R(u_k, q) (revolute) or
+    // frame p * O_k * T(u_k q) (prismatic), with p the parent frame, becomes, for aligned frames,
+    // aligned k = aligned p * (A_p^T O_k A_k) * Rz(q) or * T(z q).
     alignment_.push_back(Eigen::Matrix3d::Identity());
-    for (std::size_t k = 0; k < chain.offsets.size(); ++k)
+    for (const Joint &joint : joints_)
     {
-        const Eigen::Matrix3d &previous = alignment_.back();
+        const Eigen::Matrix3d &parent = alignment_[joint.parent];
         const Eigen::Matrix3d align =
-            Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), chain.axes[k]).toRotationMatrix();
-        offsetRotations_.push_back(previous.transpose() * chain.offsets[k].linear() * align);
-        offsetTranslations_.push_back(previous.transpose() * chain.offsets[k].translation());
+            Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), joint.axis).toRotationMatrix();
+        offsetRotations_.push_back(parent.transpose() * joint.origin.linear() * align);
+        offsetTranslations_.push_back(parent.transpose() * joint.origin.translation());
         alignment_.push_back(align);
     }
 
@@ -509,8 +667,12 @@ ompl_parc::UrdfArm::UrdfArm(std::string name, EnvironmentPtr environment, Chain 
     std::vector<UrdfArmLanes::Capsule> laneCapsules;
     for (const LocalCapsule &c : capsules_)
         laneCapsules.push_back({c.frame, c.a, c.b, c.radius});
-    lanes_ = std::make_unique<UrdfArmLanes>(basePose_, offsetRotations_, offsetTranslations_, std::move(laneCapsules),
-                                            selfCollisionPairs_);
+    std::vector<UrdfArmLanes::Joint> laneJoints;
+    for (const Joint &joint : joints_)
+        laneJoints.push_back({joint.parent, joint.coordinate, joint.multiplier, joint.offset, joint.prismatic,
+                              joint.prismatic ? getLargestJointValue(joint) : 0.});
+    lanes_ = std::make_unique<UrdfArmLanes>(basePose_, getDimension(), std::move(laneJoints), offsetRotations_,
+                                            offsetTranslations_, std::move(laneCapsules), selfCollisionPairs_);
 }
 
 bool ompl_parc::UrdfArm::allValid(const double *configs, std::size_t count) const
@@ -544,13 +706,22 @@ Eigen::Isometry3d ompl_parc::UrdfArm::pose(double x, double y, double z, double 
     return t;
 }
 
+double ompl_parc::UrdfArm::getLargestJointValue(const Joint &joint) const
+{
+    const double atLow = joint.multiplier * getBounds().low[joint.coordinate] + joint.offset;
+    const double atHigh = joint.multiplier * getBounds().high[joint.coordinate] + joint.offset;
+    return std::max(std::abs(atLow), std::abs(atHigh));
+}
+
 void ompl_parc::UrdfArm::computeSelfCollisionPairs(const CollisionBody &zeroBody)
 {
+    const auto parent = [this](std::size_t frame) { return frame == 0 ? frame : joints_[frame - 1].parent; };
     for (std::size_t i = 0; i < capsules_.size(); ++i)
         for (std::size_t j = i + 1; j < capsules_.size(); ++j)
         {
             const std::size_t fi = capsules_[i].frame, fj = capsules_[j].frame;
-            if (std::max(fi, fj) - std::min(fi, fj) >= 2 && !capsulesCollide(zeroBody, i, zeroBody, j) &&
+            const bool adjacent = fi == fj || parent(fi) == fj || parent(fj) == fi;
+            if (!adjacent && !capsulesCollide(zeroBody, i, zeroBody, j) &&
                 !(srdf_ && srdf_->allows(primitives_[i].shape.name, primitives_[j].shape.name)))
                 selfCollisionPairs_.emplace_back(i, j);
         }
@@ -574,19 +745,30 @@ void ompl_parc::UrdfArm::checkFixedLinks(const CollisionBody &body) const
 void ompl_parc::UrdfArm::computeAlignedFrames(const double *q, std::vector<Eigen::Matrix3d> &rotations,
                                               std::vector<Eigen::Vector3d> &translations) const
 {
-    const std::size_t n = offsetRotations_.size();
+    const std::size_t n = joints_.size();
     rotations.resize(n + 1);
     translations.resize(n + 1);
     rotations[0] = basePose_.linear();
     translations[0] = basePose_.translation();
     for (std::size_t k = 0; k < n; ++k)
     {
-        translations[k + 1].noalias() = translations[k] + rotations[k] * offsetTranslations_[k];
-        Eigen::Matrix3d turned;
-        turned.noalias() = rotations[k] * offsetRotations_[k];
-        // Right-multiplying by Rz(q) turns the first two columns only.
-        const double c = std::cos(q[k]), s = std::sin(q[k]);
+        const Joint &joint = joints_[k];
+        const std::size_t p = joint.parent;
+        const double value = joint.multiplier * q[joint.coordinate] + joint.offset;
         Eigen::Matrix3d &r = rotations[k + 1];
+        Eigen::Vector3d &t = translations[k + 1];
+        t.noalias() = translations[p] + rotations[p] * offsetTranslations_[k];
+        if (joint.prismatic)
+        {
+            // Right-multiplying by a translation along z moves the origin along the third column.
+            r.noalias() = rotations[p] * offsetRotations_[k];
+            t += value * r.col(2);
+            continue;
+        }
+        Eigen::Matrix3d turned;
+        turned.noalias() = rotations[p] * offsetRotations_[k];
+        // Right-multiplying by Rz(q) turns the first two columns only.
+        const double c = std::cos(value), s = std::sin(value);
         r.col(0) = c * turned.col(0) + s * turned.col(1);
         r.col(1) = c * turned.col(1) - s * turned.col(0);
         r.col(2) = turned.col(2);
@@ -611,7 +793,7 @@ Eigen::Isometry3d ompl_parc::UrdfArm::computeTipPose(const double *q) const
 {
     std::vector<Eigen::Isometry3d> frames;
     computeFrames(q, frames);
-    return frames.back() * tipOffset_;
+    return frames[chainJoints_] * tipOffset_;
 }
 
 void ompl_parc::UrdfArm::computeCapsules(const double *q, CollisionBody &body) const
@@ -655,7 +837,8 @@ bool ompl_parc::UrdfArm::solvePositionIk(const Eigen::Vector3d &target, std::mt1
         {
             computeAlignedFrames(q.data(), rotations, translations);
             const Eigen::Vector3d tip =
-                rotations.back() * (alignment_.back().transpose() * tipOffset_.translation()) + translations.back();
+                rotations[chainJoints_] * (alignment_[chainJoints_].transpose() * tipOffset_.translation()) +
+                translations[chainJoints_];
             const Eigen::Vector3d error = target - tip;
             if (error.norm() < tolerance)
             {
@@ -663,9 +846,18 @@ bool ompl_parc::UrdfArm::solvePositionIk(const Eigen::Vector3d &target, std::mt1
                     return true;
                 break;
             }
-            // Joint k turns chain link k about its axis (the z axis of its aligned frame) through its origin.
-            for (unsigned int k = 0; k < n; ++k)
-                jacobian.col(k) = rotations[k + 1].col(2).cross(tip - translations[k + 1]);
+            // Chain joint k turns chain link k + 1 about its axis (the z axis of its aligned frame) through its
+            // origin, or slides it along that axis; its coordinate moves it multiplier times as fast.
+            jacobian.setZero();
+            for (std::size_t k = 0; k < chainJoints_; ++k)
+            {
+                const Joint &joint = joints_[k];
+                const Eigen::Vector3d axis = rotations[k + 1].col(2);
+                if (joint.prismatic)
+                    jacobian.col(joint.coordinate) += joint.multiplier * axis;
+                else
+                    jacobian.col(joint.coordinate) += joint.multiplier * axis.cross(tip - translations[k + 1]);
+            }
             const Eigen::Matrix3d jjt =
                 jacobian * jacobian.transpose() + DAMPING * DAMPING * Eigen::Matrix3d::Identity();
             const Eigen::VectorXd step = jacobian.transpose() * jjt.ldlt().solve(error);

@@ -17,13 +17,26 @@
 
 namespace ompl_parc
 {
-    /** \brief A serial arm of revolute joints read from a URDF (urdfdom), for 3D multi-arm problems.
+    /** \brief A serial arm of revolute and prismatic joints read from a URDF (urdfdom), for 3D multi-arm problems.
 
         The chain runs from \e baseLink to \e tipLink; fixed joints on it are folded into the next movable
         joint's offset, and links hanging off it by fixed joints (a hand, a flange) are folded into the link
-        they hang from. Movable joints off the chain make it non-serial and are rejected. Revolute joints use
-        their `<limit>`s; continuous joints are bounded to [-pi, pi] (a configuration space must be bounded);
-        prismatic, planar and floating joints are rejected.
+        they hang from. Revolute and prismatic joints use their `<limit>`s (required, finite, lower < upper);
+        continuous joints are bounded to [-pi, pi] (a configuration space must be bounded); planar and floating
+        joints are rejected. A prismatic joint's coordinate is in metres, a revolute one's in radians: the state
+        space's distance adds them up as they are, so a metre of travel counts like a radian of turn.
+
+        A joint with `<mimic joint="j" multiplier="m" offset="o"/>` is not a planning coordinate: its value is
+        m * q_j + o, composed through mimics of mimics down to a movable joint of the chain that mimics nothing
+        (an unknown, fixed or off-chain joint there, or a loop of mimics, is refused). The coordinates are the
+        chain's movable joints that mimic nothing (getCoordinateNames()). A mimic joint's own `<limit>` narrows
+        the range of the coordinate it follows, so that every planned configuration keeps every joint within its
+        limits (a mimic whose limits leave no range is refused); its `<limit velocity>` lowers that coordinate's
+        velocity limit likewise. A movable joint off the chain that mimics a chain joint (a gripper's second finger
+        on the hand, the chain running to the first) gives its child link a frame of its own, computed after the
+        chain's, and its collision bodies move with it. Any other movable joint off the chain (the fingers, when
+        the chain ends at the hand) is held still, as MoveIt holds the joints outside the planned group: at 0
+        clamped into its `<limit>`, or where the joint it mimics is held.
 
         Collision geometry comes from the `<collision>` elements: a sphere stays a sphere, a cylinder becomes
         the capsule around it (same axis and radius), a box the capsule along its longest axis whose radius
@@ -33,15 +46,16 @@ namespace ompl_parc
         how tight each fit is. Capsule k of the body is primitive k of getPrimitives(), so exact checks (FCL on
         the primitives, and on the meshes themselves: UrdfFclModel) can be compared with ours.
 
-        Self-collision is checked between primitives of links that are not adjacent on the chain, except for
-        pairs that already overlap at the zero configuration (clamped into the joint limits): like an SRDF's
-        "default"/"adjacent" disabled pairs, such overlaps are part of the mechanical design. An SRDF given with
-        the arm removes the link pairs its `<disable_collisions>` name too (and must name links of the URDF only). */
+        Self-collision is checked between primitives of links that are not adjacent (the same frame, or one
+        frame the parent of the other), except for pairs that already overlap at the zero configuration (clamped
+        into the joint limits): like an SRDF's "default"/"adjacent" disabled pairs, such overlaps are part of the
+        mechanical design. An SRDF given with the arm removes the link pairs its `<disable_collisions>` name too
+        (and must name links of the URDF only). */
     class UrdfArm : public Robot
     {
       public:
-        /** \brief A collision primitive of the URDF: its shape (size and pose in the frame of chain link
-            \e frame, as an Obstacle) and the name of the URDF link it came from. */
+        /** \brief A collision primitive of the URDF: its shape (size and pose in frame \e frame, as an
+            Obstacle) and the name of the URDF link it came from. */
         struct Primitive
         {
             std::size_t frame;
@@ -67,7 +81,7 @@ namespace ompl_parc
 
         /** \brief The chain \e baseLink .. \e tipLink of the URDF document \e urdfXml, its base link placed at
             \e basePose in the world. Throws ompl::Exception naming the offending element for malformed
-            URDF, missing links, unsupported joints or geometry, non-serial chains, and a base pose that puts
+            URDF, missing links, unsupported joints or geometry, and a base pose that puts
             the base link (or a link fixed to it) into an obstacle of \e environment (as it is now). */
         UrdfArm(std::string name, EnvironmentPtr environment, const std::string &urdfXml, const std::string &baseLink,
                 const std::string &tipLink, const Eigen::Isometry3d &basePose, SrdfPtr srdf = nullptr,
@@ -86,8 +100,28 @@ namespace ompl_parc
             configurations at a time (single precision, conservative; see UrdfArmLanes). */
         bool allValid(const double *configs, std::size_t count) const override;
 
-        /** \brief World poses of the chain links at \e q: frames[0] is the base link, frames[k] the child
-            link of movable joint k (k = 1..dimension); the tip is frames.back() times getTipOffset(). */
+        /** \brief A movable joint of the arm: what moves frame k (k >= 1, joint k - 1 of getJoints()) relative
+            to its parent frame. Frames 1 .. getChainJointCount() are the chain's, each the parent of the next;
+            the frames after them are the child links of mimic joints off the chain. */
+        struct Joint
+        {
+            std::string name;
+            /** \brief Translates along its axis (else turns about it). */
+            bool prismatic{false};
+            /** \brief The frame it hangs from (an earlier one). */
+            std::size_t parent{0};
+            /** \brief Pose of the joint at value 0 in its parent frame (fixed joints in between folded in). */
+            Eigen::Isometry3d origin{Eigen::Isometry3d::Identity()};
+            /** \brief Unit axis, in the joint's frame. */
+            Eigen::Vector3d axis{Eigen::Vector3d::UnitZ()};
+            /** \brief The joint's value is multiplier * q[coordinate] + offset (1 and 0 unless it mimics). */
+            unsigned int coordinate{0};
+            double multiplier{1.}, offset{0.};
+        };
+
+        /** \brief World poses of the frames at \e q: frames[0] is the base link, frames[k] the child link of
+            joint k - 1 of getJoints() (the chain's first, then the mimic joints' off it); the tip is
+            frames[getChainJointCount()] times getTipOffset(). */
         void computeFrames(const double *q, std::vector<Eigen::Isometry3d> &frames) const;
 
         /** \brief World pose of the tip link at \e q. */
@@ -108,13 +142,21 @@ namespace ompl_parc
         const std::string &getUrdfXml() const { return urdfXml_; }
         const std::string &getBaseLink() const { return baseLink_; }
         const std::string &getTipLink() const { return tipLink_; }
-        /** \brief Pose of the tip link in the frame of the last movable joint's child link. */
+        /** \brief Pose of the tip link in the frame of the chain's last movable joint's child link. */
         const Eigen::Isometry3d &getTipOffset() const { return tipOffset_; }
         /** \brief The SRDF whose `<disable_collisions>` pairs are left out of the self-collision check (null if
             none). */
         const SrdfPtr &getSrdf() const { return srdf_; }
-        /** \brief Names of the movable joints, base to tip. */
+        /** \brief Names of the planning coordinates' joints (the chain's movable joints that mimic nothing), base
+            to tip. */
         const std::vector<std::string> &getJointNames() const { return jointNames_; }
+        /** \brief Every movable joint, mimic ones included: joint k moves frame k + 1. */
+        const std::vector<Joint> &getJoints() const { return joints_; }
+        /** \brief How many of getJoints() lie on the chain (the first ones). */
+        std::size_t getChainJointCount() const { return chainJoints_; }
+        /** \brief The largest |value| \e joint takes within the bounds: how far a prismatic joint can slide its
+            child from its origin (bounds on motion need it). */
+        double getLargestJointValue(const Joint &joint) const;
         std::vector<std::string> getCoordinateNames() const override { return jointNames_; }
 
       protected:
@@ -124,7 +166,7 @@ namespace ompl_parc
         MotionLimits defaultMotionLimits() const override;
 
       private:
-        /** \brief A capsule of a primitive, in its chain link's aligned frame. */
+        /** \brief A capsule of a primitive, in its frame's aligned frame. */
         struct LocalCapsule
         {
             std::size_t frame;
@@ -132,13 +174,13 @@ namespace ompl_parc
             double radius;
         };
 
-        /** \brief What the URDF says about the chain: joint limits, per movable joint k the offset from
-            the frame of chain link k-1 to the joint and its unit axis, the tip offset and the primitives. */
+        /** \brief What the URDF says about the chain: per coordinate its limits, joint name and velocity limit,
+            the movable joints (the chain's, then the mimic joints off it), the tip offset and the primitives. */
         struct Chain
         {
             ompl::base::RealVectorBounds limits{0};
-            std::vector<Eigen::Isometry3d> offsets;
-            std::vector<Eigen::Vector3d> axes;
+            std::vector<Joint> joints;
+            std::size_t chainJoints{0};
             std::vector<std::string> names;
             std::vector<double> velocities;
             /** \brief Every link of the URDF (an SRDF may name only these). */
@@ -155,15 +197,17 @@ namespace ompl_parc
         UrdfArm(std::string name, EnvironmentPtr environment, Chain chain, const Eigen::Isometry3d &basePose,
                 SrdfPtr srdf);
 
-        /** \brief Joint-aligned frames at \e q, the one forward kinematics every query uses: frame k is chain
-            link k's frame turned by alignment_[k] so that joint k turns about its z axis. A joint then costs
-            a rotation product and a 2D turn of two columns, not a general axis-angle rotation. \e rotations
-            and \e translations get getDimension() + 1 entries (frame 0: the base). */
+        /** \brief Joint-aligned frames at \e q, the one forward kinematics every query uses: frame k is link
+            k's frame turned by alignment_[k] so that its joint turns about (or slides along) its z axis. A
+            revolute joint then costs a rotation product and a 2D turn of two columns, not a general axis-angle
+            rotation; a prismatic one a rotation product and a step along a column. \e rotations and
+            \e translations get getJoints().size() + 1 entries (frame 0: the base). */
         void computeAlignedFrames(const double *q, std::vector<Eigen::Matrix3d> &rotations,
                                   std::vector<Eigen::Vector3d> &translations) const;
 
-        /** \brief Self-collision pairs: primitives of non-adjacent links not overlapping in \e zeroBody (the
-            body at the zero configuration) whose links the SRDF does not allow to touch. */
+        /** \brief Self-collision pairs: primitives of frames that are neither the same nor parent and child, not
+            overlapping in \e zeroBody (the body at the zero configuration), whose links the SRDF does not allow
+            to touch. */
         void computeSelfCollisionPairs(const CollisionBody &zeroBody);
 
         /** \brief Throws ompl::Exception naming the link and the obstacle if a link that never moves (the base
@@ -175,10 +219,12 @@ namespace ompl_parc
         SrdfPtr srdf_;
         std::vector<double> velocities_;
         std::string urdfXml_, baseLink_, tipLink_;
-        /** \brief Per movable joint k, the offset from aligned frame k-1 to aligned frame k at q_k = 0. */
+        std::vector<Joint> joints_;
+        std::size_t chainJoints_;
+        /** \brief Per joint k, the offset from its parent's aligned frame to aligned frame k + 1 at value 0. */
         std::vector<Eigen::Matrix3d> offsetRotations_;
         std::vector<Eigen::Vector3d> offsetTranslations_;
-        /** \brief Per chain link k, the rotation from its URDF frame to its aligned frame (base: identity). */
+        /** \brief Per frame k, the rotation from its URDF frame to its aligned frame (base: identity). */
         std::vector<Eigen::Matrix3d> alignment_;
         std::vector<std::string> jointNames_;
         Eigen::Isometry3d tipOffset_;

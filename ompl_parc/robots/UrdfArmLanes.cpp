@@ -28,19 +28,20 @@ namespace
     }
 }  // namespace
 
-ompl_parc::UrdfArmLanes::UrdfArmLanes(const Eigen::Isometry3d &basePose,
-                                      const std::vector<Eigen::Matrix3d> &offsetRotations,
+ompl_parc::UrdfArmLanes::UrdfArmLanes(const Eigen::Isometry3d &basePose, unsigned int dimension,
+                                      std::vector<Joint> joints, const std::vector<Eigen::Matrix3d> &offsetRotations,
                                       const std::vector<Eigen::Vector3d> &offsetTranslations,
                                       std::vector<Capsule> capsules,
                                       std::vector<std::pair<std::size_t, std::size_t>> selfPairs)
-  : joints_(offsetRotations.size()), selfPairs_(std::move(selfPairs))
+  : dimension_(dimension), joints_(std::move(joints)), selfPairs_(std::move(selfPairs))
 {
+    // Every frame's origin is within the joint offsets and prismatic travels of all joints from the base.
     double reach = 0., extent = 0.;
-    for (const Eigen::Vector3d &t : offsetTranslations)
-        reach += t.norm();
+    for (std::size_t k = 0; k < joints_.size(); ++k)
+        reach += offsetTranslations[k].norm() + joints_[k].travel;
     for (const Capsule &c : capsules)
         extent = std::max(extent, std::max(c.a.norm(), c.b.norm()) + c.radius);
-    selfInflation_ = (reach + extent) * static_cast<double>(joints_ + 4) * std::ldexp(1., -20);
+    selfInflation_ = (reach + extent) * static_cast<double>(joints_.size() + 4) * std::ldexp(1., -20);
     inflation_ = selfInflation_ + (basePose.translation().norm() + reach + extent) * std::ldexp(1., -21);
 
     for (int row = 0; row < 3; ++row)
@@ -49,7 +50,7 @@ ompl_parc::UrdfArmLanes::UrdfArmLanes(const Eigen::Isometry3d &basePose,
             baseRotation_[3 * row + col] = static_cast<float>(basePose.linear()(row, col));
         baseTranslation_[row] = static_cast<float>(basePose.translation()[row]);
     }
-    for (std::size_t k = 0; k < joints_; ++k)
+    for (std::size_t k = 0; k < joints_.size(); ++k)
         for (int row = 0; row < 3; ++row)
         {
             for (int col = 0; col < 3; ++col)
@@ -77,7 +78,7 @@ std::size_t ompl_parc::UrdfArmLanes::width()
 
 bool ompl_parc::UrdfArmLanes::anyCollides(const double *configs, std::size_t count, const ObstacleSet &obstacles) const
 {
-    const std::size_t frames = joints_ + 1, capsules = frame_.size();
+    const std::size_t frames = joints_.size() + 1, capsules = frame_.size();
     thread_local Scratch s;
     s.rotations.resize(9 * frames);
     s.translations.resize(3 * frames);
@@ -90,27 +91,46 @@ bool ompl_parc::UrdfArmLanes::anyCollides(const double *configs, std::size_t cou
         s.rotations[e] = Batch(e % 4 == 0 ? 1.f : 0.f);
     for (int e = 0; e < 3; ++e)
         s.translations[e] = Batch(0.f);
-    for (std::size_t k = 0; k < joints_; ++k)
+    for (std::size_t k = 0; k < joints_.size(); ++k)
     {
-        alignas(64) float angle[WIDTH];
+        const Joint &joint = joints_[k];
+        alignas(64) float value[WIDTH];
         for (std::size_t l = 0; l < WIDTH; ++l)
-            angle[l] = static_cast<float>(configs[std::min(l, count - 1) * joints_ + k]);
-        const auto sc = xsimd::sincos(Batch::load_aligned(angle));
-        const Batch &sine = sc.first, &cosine = sc.second;
-        const Batch *r = &s.rotations[9 * k];
+            value[l] = static_cast<float>(
+                joint.multiplier * configs[std::min(l, count - 1) * dimension_ + joint.coordinate] + joint.offset);
+        const Batch q = Batch::load_aligned(value);
+        const Batch *r = &s.rotations[9 * joint.parent];
         const float *o = &offsetRotations_[9 * k];
-        rotate(r, &offsetTranslations_[3 * k], &s.translations[3 * k], &s.translations[3 * (k + 1)]);
+        Batch *t = &s.translations[3 * (k + 1)];
+        rotate(r, &offsetTranslations_[3 * k], &s.translations[3 * joint.parent], t);
         Batch *next = &s.rotations[9 * (k + 1)];
+        // Row by row, the parent's rotation times the offset rotation.
+        const auto turned = [r, o](int row, Batch *out)
+        {
+            for (int col = 0; col < 3; ++col)
+                out[col] = r[3 * row] * Batch(o[col]) + r[3 * row + 1] * Batch(o[3 + col]) +
+                           r[3 * row + 2] * Batch(o[6 + col]);
+        };
+        if (joint.prismatic)
+        {
+            // Right-multiplying by a translation along z moves the origin along the third column.
+            for (int row = 0; row < 3; ++row)
+            {
+                turned(row, next + 3 * row);
+                t[row] += q * next[3 * row + 2];
+            }
+            continue;
+        }
+        const auto sc = xsimd::sincos(q);
+        const Batch &sine = sc.first, &cosine = sc.second;
         for (int row = 0; row < 3; ++row)
         {
-            Batch turned[3];
-            for (int col = 0; col < 3; ++col)
-                turned[col] = r[3 * row] * Batch(o[col]) + r[3 * row + 1] * Batch(o[3 + col]) +
-                              r[3 * row + 2] * Batch(o[6 + col]);
+            Batch row3[3];
+            turned(row, row3);
             // Right-multiplying by Rz(q) turns the first two columns only.
-            next[3 * row] = cosine * turned[0] + sine * turned[1];
-            next[3 * row + 1] = cosine * turned[1] - sine * turned[0];
-            next[3 * row + 2] = turned[2];
+            next[3 * row] = cosine * row3[0] + sine * row3[1];
+            next[3 * row + 1] = cosine * row3[1] - sine * row3[0];
+            next[3 * row + 2] = row3[2];
         }
     }
     for (std::size_t i = 0; i < capsules; ++i)

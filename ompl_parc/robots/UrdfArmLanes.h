@@ -24,9 +24,9 @@ namespace ompl_parc
 
         Single precision is safe because every radius is inflated: a float operation rounds by at most 2^-24
         relative. The kinematics run in the base frame, where coordinates are bounded by the arm's reach S (joint
-        offsets and capsule extents); each of the n joints adds a few roundings of rotation entries and of S
-        (sin/cos of a rounded angle included), about 10 n S 2^-24 in all, so self-collision inflates radii by
-        (n + 4) S 2^-20 (16 um for a Panda). The end points then move to the world frame (a rotation and the
+        offsets, prismatic joints' travel and capsule extents); each of the n joints adds a few roundings of
+        rotation entries and of S (sin/cos of a rounded angle included), about 10 n S 2^-24 in all, so
+        self-collision inflates radii by (n + 4) S 2^-20 (16 um for a Panda). The end points then move to the world frame (a rotation and the
         base translation B, a few more roundings of B + S), so the environment test inflates by
         getInflation() = that + (B + S) 2^-21 (19 um for a Panda two metres from the origin). Tests bisect to
         configurations a hair inside collisions and check none is missed. The width is the compiler's vector width for float (4 on baseline
@@ -35,7 +35,19 @@ namespace ompl_parc
     class UrdfArmLanes
     {
       public:
-        /** \brief A capsule in the aligned frame of chain link \e frame. */
+        /** \brief A movable joint: it moves frame k + 1 (joint k) from aligned frame \e parent (an earlier one),
+            turning about or sliding along its z axis by multiplier * q[coordinate] + offset. */
+        struct Joint
+        {
+            std::size_t parent;
+            unsigned int coordinate;
+            double multiplier, offset;
+            bool prismatic;
+            /** \brief A prismatic joint's largest |value| within the bounds (0 for a revolute one). */
+            double travel;
+        };
+
+        /** \brief A capsule in aligned frame \e frame. */
         struct Capsule
         {
             std::size_t frame;
@@ -43,10 +55,11 @@ namespace ompl_parc
             double radius;
         };
 
-        /** \brief The arm's kinematics as UrdfArm keeps them: the base pose, per movable joint k the offset
-            from aligned frame k - 1 to aligned frame k at q_k = 0 (the joint turns about its z axis), the
-            capsules and the self-collision pairs. */
-        UrdfArmLanes(const Eigen::Isometry3d &basePose, const std::vector<Eigen::Matrix3d> &offsetRotations,
+        /** \brief The arm's kinematics as UrdfArm keeps them: the base pose, the number of coordinates, the
+            joints and per joint k the offset from its parent's aligned frame to aligned frame k + 1 at value 0,
+            the capsules and the self-collision pairs. */
+        UrdfArmLanes(const Eigen::Isometry3d &basePose, unsigned int dimension, std::vector<Joint> joints,
+                     const std::vector<Eigen::Matrix3d> &offsetRotations,
                      const std::vector<Eigen::Vector3d> &offsetTranslations, std::vector<Capsule> capsules,
                      std::vector<std::pair<std::size_t, std::size_t>> selfPairs);
 
@@ -63,7 +76,8 @@ namespace ompl_parc
         double getInflation() const { return inflation_; }
 
       private:
-        std::size_t joints_;
+        unsigned int dimension_;
+        std::vector<Joint> joints_;
         /** \brief Base rotation (row-major) and translation. */
         float baseRotation_[9], baseTranslation_[3];
         /** \brief Per joint: offset rotation (row-major, 9 each) and translation (3 each). */

@@ -25,10 +25,15 @@ namespace
         return levers;
     }
 
-    /** Joint k (coordinate k) turns chain link k + 1 about an axis through its frame origin o_{k+1}. A capsule on
-        link f >= k + 1 is within |o_j - o_{j-1}| summed over j = k + 2 .. f (rigid links: the same at every
-        configuration) plus its farther end's distance from o_f plus its radius. Measured at the zero
-        configuration, where every such distance is what it is everywhere. Per capsule and joint. */
+    /** Joint k of the arm moves frame k + 1 and every frame below it, turning them about an axis through o_{k+1}
+        (frame origins o) or sliding them along it. Per unit of joint k's value, a point p of a capsule on frame
+        f below it moves by at most |p - o_{k+1}| if the joint turns and by exactly 1 if it slides. |p - o_{k+1}|
+        is at most the capsule's farther end's distance from o_f plus its radius (rigid in frame f: measured at the
+        zero configuration, the same everywhere) plus, for each frame j on the way from f up to k + 2,
+        |o_j - o_{parent(j)}|: the joint's origin offset plus, for a prismatic joint, its largest travel within
+        the bounds (the same at every configuration for a revolute joint). A coordinate changes a joint's value
+        by |multiplier| times its own change (mimic joints), summed over the joints it drives. Per capsule and
+        coordinate. */
     std::vector<std::vector<double>> urdfArmLevers(const ompl_parc::UrdfArm &arm)
     {
         const std::vector<double> zero(arm.getDimension(), 0.);
@@ -36,19 +41,25 @@ namespace
         arm.computeFrames(zero.data(), frames);
         ompl_parc::CollisionBody body;
         arm.computeBody(zero.data(), body);
+        const auto &joints = arm.getJoints();
+        std::vector<double> links;  // per joint k, the most |o_{k+1} - o_{parent}| can be
+        for (const auto &joint : joints)
+            links.push_back(joint.origin.translation().norm() +
+                            (joint.prismatic ? arm.getLargestJointValue(joint) : 0.));
         std::vector<std::vector<double>> levers(body.size(), std::vector<double>(arm.getDimension(), 0.));
         for (std::size_t c = 0; c < body.size(); ++c)
         {
             const std::size_t f = arm.getPrimitives()[c].frame;
             const Eigen::Vector3d &o = frames[f].translation();
-            const double reach = std::max((Eigen::Vector3d(body.ax_[c], body.ay_[c], body.az_[c]) - o).norm(),
-                                          (Eigen::Vector3d(body.bx_[c], body.by_[c], body.bz_[c]) - o).norm()) +
-                                 body.radius_[c];
-            double chain = 0.;  // |o_f - o_{f-1}| + ... + |o_{k+2} - o_{k+1}|, growing as k goes down
-            for (std::size_t k = f; k-- > 0;)
+            // The most |p - o_frame| can be for the points p of the capsule, growing as the frames go up.
+            double distance = std::max((Eigen::Vector3d(body.ax_[c], body.ay_[c], body.az_[c]) - o).norm(),
+                                       (Eigen::Vector3d(body.bx_[c], body.by_[c], body.bz_[c]) - o).norm()) +
+                              body.radius_[c];
+            for (std::size_t frame = f; frame > 0; frame = joints[frame - 1].parent)
             {
-                levers[c][k] = chain + reach;
-                chain += (frames[k + 1].translation() - frames[k].translation()).norm();
+                const auto &joint = joints[frame - 1];
+                levers[c][joint.coordinate] += std::abs(joint.multiplier) * (joint.prismatic ? 1. : distance);
+                distance += links[frame - 1];
             }
         }
         return levers;

@@ -16,7 +16,10 @@ namespace ompl_parc
         axis through the joint, at speed |dq_k| times the point's distance from that axis; summed over joints,
         bound = sum_k |dq_k| lever_k, where lever_k bounds the distance from joint k to any body point it moves
         over all configurations: the chain of (rigid, configuration-independent) joint-to-joint distances out to
-        the capsule's link plus the capsule's reach from its link frame (its end point distance plus radius). */
+        the capsule's link plus the capsule's reach from its link frame (its end point distance plus radius). A
+        prismatic joint moves every point beyond it at |dq_k| exactly (lever 1), and lengthens the joint-to-joint
+        distances beyond it by at most its largest travel within the bounds; a mimic joint adds its |multiplier|
+        times its own lever to the lever of the coordinate it follows. */
     class DisplacementBound
     {
       public:
