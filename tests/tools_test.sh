@@ -25,6 +25,15 @@ expect() {
 }
 
 expect 2 "unknown argument '--all'" bash "$scenarios/../../scripts/setup.sh" --all
+# The meshed arm's cell: the fits reported, the plan validated and drawn (mesh obstacles in the 3D page); a scenario
+# naming a mesh that is not there is one line and exit 2.
+cell="$scenarios/../assets/meshed_arm/meshed_cell.json"
+expect 0 "^meshes     obstacle table: [0-9]* boxes" "$bin/ompl_parc_demo" --scenario-file "$cell" --smooth 0 \
+    --picture "$tmp/cell.html"
+expect 0 '"shape":"mesh"' grep -o '"shape":"mesh"' "$tmp/cell.html"
+sed 's|meshes/table.stl|meshes/no_table.stl|' "$cell" >"$tmp/no_table.json"
+expect 2 "obstacles\[0\]: TriangleMesh: mesh file '.*no_table.stl' does not exist" "$bin/ompl_parc_demo" \
+    --scenario-file "$tmp/no_table.json"
 expect 0 "profile panda (from the robots" "$bin/ompl_parc_demo" --scenario panda_cage --robots 2 --smooth 0
 expect 0 "profile mobile$" "$bin/ompl_parc_demo" --scenario panda_cage --robots 2 --smooth 0 --param profile=mobile
 expect 0 "validated  yes" "$bin/ompl_parc_demo" --scenario mobile_cross --robots 4 --seed 3 --out "$tmp/sol.json"

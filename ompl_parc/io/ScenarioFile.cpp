@@ -272,8 +272,16 @@ namespace
                     fail(where + ".fit_resolution must be a whole number of cells, 1 .. 256");
                 o.fitResolution = static_cast<unsigned int>(cells);
             }
-            o.mesh = ompl_parc::TriangleMesh::read(
-                (file.is_relative() ? std::filesystem::path(folder) / file : file).lexically_normal().string(), scale);
+            try
+            {
+                o.mesh = ompl_parc::TriangleMesh::read(
+                    (file.is_relative() ? std::filesystem::path(folder) / file : file).lexically_normal().string(),
+                    scale);
+            }
+            catch (const ompl::Exception &e)
+            {
+                fail(where + ": " + e.what());
+            }
             o.shape = Shape::MESH;
         }
         else

@@ -1,6 +1,7 @@
 """The Python module end to end (run by ctest as python.pytest, with PYTHONPATH at the built module and
 OMPL_PARC_BIN at the tools): every planner from Python on Mobile Cross 8, validated; plans as NumPy arrays; scenario
 and solution files round-tripped; bad input as ValueError with the tools' own message; prompt timeouts and Ctrl-C."""
+import json
 import os
 import signal
 import subprocess
@@ -301,3 +302,23 @@ def test_an_arm_named_by_its_srdf_group_with_its_own_limits(tmp_path):
     assert trajectory["duration"] >= 2 * (0.25 / 2) ** 0.5
     with pytest.raises(ValueError, match="no group 'hand'"):
         ompl_parc.team([ompl_parc.urdf_arm("a", q0, q1, srdf_file=str(srdf), group="hand")])
+
+
+def test_a_meshed_arm_and_a_mesh_table_from_python():
+    assets = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "demos", "assets", "meshed_arm")
+    with open(os.path.join(assets, "meshed_cell.json")) as f:
+        cell = json.load(f)
+    arms = [ompl_parc.urdf_arm(r["name"], r["start"], r["goal"], builtin=None,
+                               urdf_file=os.path.join(assets, "meshed_arm.urdf"),
+                               srdf_file=os.path.join(assets, "meshed_arm.srdf"), group="arm_with_gripper",
+                               position=r["base_pose"]["position"], orientation=r["base_pose"]["orientation"],
+                               mesh_path=[os.path.join(assets, "..")], mesh_capsules=3)
+            for r in cell["robots"][:2]]
+    table = ompl_parc.mesh(os.path.join(assets, "meshes", "table.stl"), scale=[0.7, 0.7, 1.0], name="table")
+    problem = ompl_parc.team(arms, [table], resolution=100)
+    result = ompl_parc.solve(problem, "arc", seed=1, time_limit=30)
+    assert result.solved
+    report = ompl_parc.validate(problem, result.plan)
+    assert report.valid, report.message
+    with pytest.raises(ValueError, match="does not exist"):
+        ompl_parc.team(arms, [ompl_parc.mesh(os.path.join(assets, "meshes", "no_table.stl"))], resolution=100)

@@ -14,6 +14,7 @@ shell, consistently oriented, never self-intersecting. The shapes are designed t
 their skeleton, so the rays see all of the link.
 """
 
+import math
 import os
 import struct
 
@@ -587,6 +588,9 @@ def srdf_text():
            '  <group name="arm">',
            '    <chain base_link="base_link" tip_link="hand"/>',
            "  </group>",
+           '  <group name="arm_with_gripper">',
+           '    <chain base_link="base_link" tip_link="finger_left"/>',
+           "  </group>",
            '  <group name="gripper">',
            '    <link name="hand"/>',
            '    <link name="finger_left"/>',
@@ -618,6 +622,27 @@ PACKAGE_XML = """<?xml version="1.0"?>
 
 
 # ----------------------------------------------------------------------------------------------------------------
+
+
+def capsule_prims(prims):
+    """The hand-made capsule model: each primitive as the capsule a person would draw around it for a planner that
+    checks capsules (ompl_parc reads a <cylinder> as the capsule of its axis and radius): a cylinder of radius r
+    and length L becomes one of length L - 2r, so that its capsule spans L; a box the capsule along its longest
+    side whose radius is its larger other half-side. Unlike the primitives, these do not all enclose the mesh."""
+    out = []
+    for prim in prims:
+        if prim[0] == "cylinder":
+            _, r, length, xyz, rpy = prim
+            out.append(("cylinder", r, max(length - 2 * r, 0.002), xyz, rpy))
+        elif prim[0] == "box":
+            _, size, xyz = prim
+            longest = int(np.argmax(size))
+            r = max(size[k] for k in range(3) if k != longest) / 2
+            rpy = [(0, math.pi / 2, 0), (-math.pi / 2, 0, 0), (0, 0, 0)][longest]
+            out.append(("cylinder", r, max(size[longest] - 2 * r, 0.002), xyz, rpy))
+        else:
+            out.append(prim)
+    return out
 
 
 def zero_config_origins():
@@ -657,9 +682,13 @@ def main():
 
     with open(os.path.join(HERE, "meshed_arm.urdf"), "w", newline="\n") as f:
         f.write(urdf_text(inertials, None, "meshed_arm: collision geometry is the link meshes."))
-    with open(os.path.join(HERE, "meshed_arm_capsules.urdf"), "w", newline="\n") as f:
+    with open(os.path.join(HERE, "meshed_arm_primitives.urdf"), "w", newline="\n") as f:
         f.write(urdf_text(inertials, prims, "meshed_arm with hand-made collision primitives (boxes, cylinders) "
-                                           "approximating each mesh; kinematics identical to meshed_arm.urdf."))
+                                           "enclosing each mesh; kinematics identical to meshed_arm.urdf."))
+    capsules = {name: capsule_prims(p) for name, p in prims.items()}
+    with open(os.path.join(HERE, "meshed_arm_capsules.urdf"), "w", newline="\n") as f:
+        f.write(urdf_text(inertials, capsules, "meshed_arm with a hand-made capsule model (each <cylinder> read as "
+                                              "the capsule of its axis); kinematics identical to meshed_arm.urdf."))
     with open(os.path.join(HERE, "meshed_arm.srdf"), "w", newline="\n") as f:
         f.write(srdf_text())
     with open(os.path.join(HERE, "package.xml"), "w", newline="\n") as f:
