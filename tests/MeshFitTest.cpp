@@ -1,5 +1,6 @@
 /* Meshes: reading STL, OBJ and COLLADA, finding them, fitting capsules (links) and boxes (obstacles) that contain
    them, caching fits, and one clear line for each kind of bad mesh. */
+#include "TestProblems.h"
 #include "ompl_parc/collision/Environment.h"
 #include "ompl_parc/meshes/BoxFit.h"
 #include "ompl_parc/meshes/CapsuleFit.h"
@@ -21,19 +22,6 @@ using namespace ompl_parc;
 namespace
 {
     const std::string MESHES = std::string(OMPL_PARC_ASSET_DIR) + "/meshed_arm/meshes/";
-
-    std::string failureOf(const std::function<void()> &f)
-    {
-        try
-        {
-            f();
-        }
-        catch (const std::exception &e)
-        {
-            return e.what();
-        }
-        return "";
-    }
 
     /** Points on the surface: every vertex, and \e perTriangle random points of each triangle (fixed seed). */
     std::vector<Eigen::Vector3d> surfacePoints(const TriangleMesh &mesh, int perTriangle)
@@ -96,13 +84,14 @@ TEST(TriangleMesh, RefusesBadMeshesWithOneLine)
                                                           {(folder / "table.xyz").string(), "cannot be read"},
                                                           {(folder / "flat.stl").string(), "degenerate"}})
     {
-        const std::string message = failureOf([&] { TriangleMesh::read(file); });
+        const std::string message = test::messageOf([&] { TriangleMesh::read(file); });
         EXPECT_NE(message.find(expected), std::string::npos) << file << ": " << message;
         EXPECT_NE(message.find(file), std::string::npos) << message;
         EXPECT_EQ(message.find('\n'), std::string::npos) << message;
     }
-    EXPECT_NE(failureOf([&] { TriangleMesh::read(MESHES + "hand.stl", Eigen::Vector3d(1., 0., 1.)); }).find("scale"),
-              std::string::npos);
+    EXPECT_NE(
+        test::messageOf([&] { TriangleMesh::read(MESHES + "hand.stl", Eigen::Vector3d(1., 0., 1.)); }).find("scale"),
+        std::string::npos);
 }
 
 TEST(MeshLocator, FindsPackagesAndRelativePaths)
@@ -115,10 +104,10 @@ TEST(MeshLocator, FindsPackagesAndRelativePaths)
     // A package found through the search path, from anywhere.
     const MeshLocator elsewhere("/", {OMPL_PARC_ASSET_DIR});
     EXPECT_TRUE(std::filesystem::exists(elsewhere.resolve("package://meshed_arm/meshes/hand.stl")));
-    const std::string missing = failureOf([&] { MeshLocator("/").resolve("package://no_such_package/a.stl"); });
+    const std::string missing = test::messageOf([&] { MeshLocator("/").resolve("package://no_such_package/a.stl"); });
     EXPECT_NE(missing.find("package 'no_such_package'"), std::string::npos) << missing;
     EXPECT_NE(missing.find("OMPL_PARC_PACKAGE_PATH"), std::string::npos) << missing;
-    EXPECT_NE(failureOf([&] { locator.resolve("http://example.com/a.stl"); }).find("only package://"),
+    EXPECT_NE(test::messageOf([&] { locator.resolve("http://example.com/a.stl"); }).find("only package://"),
               std::string::npos);
 }
 

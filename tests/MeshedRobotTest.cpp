@@ -24,15 +24,7 @@ namespace
 
     std::string scenarioFailure(const std::string &json, const std::string &folder)
     {
-        try
-        {
-            ScenarioFile::fromJson(json, folder);
-        }
-        catch (const std::exception &e)
-        {
-            return e.what();
-        }
-        return "";
+        return test::messageOf([&] { ScenarioFile::fromJson(json, folder); });
     }
 }  // namespace
 
@@ -138,34 +130,20 @@ TEST(MeshedRobot, ScenarioFilesKeepMeshesAndRefuseBadOnesInOneLine)
     const std::string package = "package://meshed_arm/";
     for (std::size_t at; (at = urdf.find(package)) != std::string::npos;)
         urdf.replace(at, package.size(), "package://no_such_arm/");
-    const std::string message = [&]
-    {
-        try
+    const std::string message = test::messageOf(
+        [&]
         {
             UrdfArm("arm", nullptr, urdf, "base_link", "hand", Eigen::Isometry3d::Identity(), nullptr,
                     UrdfMeshOptions{MeshLocator(MESHED_ARM_DIR)});
-        }
-        catch (const std::exception &e)
-        {
-            return std::string(e.what());
-        }
-        return std::string();
-    }();
+        });
     EXPECT_NE(message.find("link 'link1'"), std::string::npos) << message;
     EXPECT_NE(message.find("package 'no_such_arm'"), std::string::npos) << message;
-    const std::string relative = [&]
-    {
-        try
+    const std::string relative = test::messageOf(
+        [&]
         {
             UrdfArm("arm", nullptr, UrdfArm::readFile(MESHED_ARM_DIR + "meshed_arm.urdf"), "base_link", "hand",
                     Eigen::Isometry3d::Identity(), nullptr, UrdfMeshOptions{MeshLocator(folder.string())});
-        }
-        catch (const std::exception &e)
-        {
-            return std::string(e.what());
-        }
-        return std::string();
-    }();
+        });
     EXPECT_NE(relative.find("link 'base_link'"), std::string::npos) << relative;
     EXPECT_NE(relative.find("meshes/base_link.stl' does not exist"), std::string::npos) << relative;
 }

@@ -1,4 +1,5 @@
 /* SRDF: allowed link pairs for self-collision and chains named by group, from C++ and from scenario files. */
+#include "TestProblems.h"
 #include "ompl_parc/io/ScenarioFile.h"
 #include "ompl_parc/robots/BuiltinModels.h"
 #include "ompl_parc/robots/Srdf.h"
@@ -22,19 +23,6 @@ namespace
   <disable_collisions link1="panda_link1" link2="panda_link3" reason="Never"/>
 </robot>)";
 
-    std::string messageOf(const std::function<void()> &f)
-    {
-        try
-        {
-            f();
-        }
-        catch (const std::exception &e)
-        {
-            return e.what();
-        }
-        return "";
-    }
-
     std::shared_ptr<UrdfArm> panda(SrdfPtr srdf)
     {
         return std::make_shared<UrdfArm>("arm", std::make_shared<Environment>(), models::pandaUrdf(), "panda_link0",
@@ -49,7 +37,7 @@ TEST(Srdf, ReadsAllowedPairsInEitherOrderAndChainGroups)
     EXPECT_TRUE(srdf.allows("panda_link3", "panda_link1"));
     EXPECT_FALSE(srdf.allows("panda_link1", "panda_link4"));
     EXPECT_EQ(srdf.getChain("arm"), std::make_pair(std::string("panda_link0"), std::string("panda_link8")));
-    EXPECT_NE(messageOf([&] { srdf.getChain("hand"); }).find("no group 'hand' (chain groups: arm)"), std::string::npos);
+    EXPECT_NE(test::messageOf([&] { srdf.getChain("hand"); }).find("no group 'hand' (chain groups: arm)"), std::string::npos);
 }
 
 TEST(Srdf, RefusesMalformedInputWithOneLine)
@@ -68,7 +56,7 @@ TEST(Srdf, RefusesMalformedInputWithOneLine)
              {"<robot><group", "malformed SRDF"},
              {"<model/>", "not <robot>"}})
     {
-        const std::string message = messageOf([&] { Srdf::parse(text); });
+        const std::string message = test::messageOf([&] { Srdf::parse(text); });
         EXPECT_NE(message.find(expected), std::string::npos) << message;
         EXPECT_EQ(message.find('\n'), std::string::npos);
     }
@@ -95,7 +83,7 @@ TEST(Srdf, NamingALinkTheUrdfDoesNotHaveIsRefused)
 {
     const auto srdf = std::make_shared<Srdf>(Srdf::parse(
         R"(<robot><disable_collisions link1="panda_link1" link2="gripper_finger" reason="Adjacent"/></robot>)"));
-    const std::string message = messageOf([&] { panda(srdf); });
+    const std::string message = test::messageOf([&] { panda(srdf); });
     EXPECT_NE(message.find("the SRDF names link 'gripper_finger', which the URDF does not have"), std::string::npos)
         << message;
 }
@@ -132,7 +120,7 @@ TEST(Srdf, ScenarioFilesNameTheChainByGroupAndKeepTheSrdf)
              {R"("srdf_file": "missing.srdf", "group": "arm")", "missing.srdf"},
              {R"("srdf_file": "panda.srdf", "srdf": "<robot/>", "group": "arm")", "give one"},
              {R"("srdf_file": "panda.srdf", "group": "arm", "base_link": "panda_link0")", "give the group or"}})
-        EXPECT_NE(messageOf([&] { ScenarioFile::fromJson(scenario(fields), folder.string()); }).find(expected),
+        EXPECT_NE(test::messageOf([&] { ScenarioFile::fromJson(scenario(fields), folder.string()); }).find(expected),
                   std::string::npos)
             << fields;
     std::filesystem::remove_all(folder);

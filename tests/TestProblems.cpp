@@ -216,3 +216,16 @@ std::vector<double> ompl_parc::test::randomConfig(const Robot &robot, std::mt199
         q[d] = std::uniform_real_distribution<double>(robot.getBounds().low[d], robot.getBounds().high[d])(rng);
     return q;
 }
+
+std::string ompl_parc::test::messageOf(const std::function<void()> &f)
+{
+    try
+    {
+        f();
+    }
+    catch (const std::exception &e)
+    {
+        return e.what();
+    }
+    return "";
+}

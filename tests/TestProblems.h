@@ -12,6 +12,7 @@
 #include <ompl/base/Planner.h>
 #include <ompl/geometric/PathGeometric.h>
 
+#include <functional>
 #include <memory>
 #include <random>
 #include <string>
@@ -93,6 +94,9 @@ namespace ompl_parc::test
     /** \brief Replace robot \e a's path from timestep \e t on by robot \e b's (so that a and b collide from t on,
         up to b's arrival): the change an invalidation of (a, t) must account for. */
     void followFrom(MultiRobotPlan &plan, std::size_t a, std::size_t b, std::size_t t);
+
+    /** \brief The message of the exception \e f throws, or "" if it throws none. */
+    std::string messageOf(const std::function<void()> &f);
 }  // namespace ompl_parc::test
 
 #endif

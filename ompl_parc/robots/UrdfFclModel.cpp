@@ -2,6 +2,26 @@
 
 #include <fcl/narrowphase/collision.h>
 
+namespace
+{
+    /** Whether an object of \e a touches one of \e b (containers of pointers to placed FCL objects): boxes, then FCL. */
+    template <typename As, typename Bs>
+    bool anyTouch(const As &a, const Bs &b)
+    {
+        const fcl::CollisionRequestd request;
+        for (const auto &p : a)
+            for (const auto &q : b)
+            {
+                if (!p->getAABB().overlap(q->getAABB()))
+                    continue;
+                fcl::CollisionResultd result;
+                if (fcl::collide(p.get(), q.get(), request, result) > 0)
+                    return true;
+            }
+        return false;
+    }
+}  // namespace
+
 ompl_parc::UrdfFclModel::UrdfFclModel(std::shared_ptr<const UrdfArm> arm) : arm_(std::move(arm))
 {
     for (const auto &p : arm_->getPrimitives())
@@ -30,30 +50,10 @@ void ompl_parc::UrdfFclModel::setConfig(const double *q)
 
 bool ompl_parc::UrdfFclModel::collides(const UrdfFclModel &other) const
 {
-    const fcl::CollisionRequestd request;
-    for (const auto &a : objects_)
-        for (const auto &b : other.objects_)
-        {
-            if (!a->getAABB().overlap(b->getAABB()))
-                continue;
-            fcl::CollisionResultd result;
-            if (fcl::collide(a.get(), b.get(), request, result) > 0)
-                return true;
-        }
-    return false;
+    return anyTouch(objects_, other.objects_);
 }
 
 bool ompl_parc::UrdfFclModel::collides(const Environment &environment) const
 {
-    const fcl::CollisionRequestd request;
-    for (const auto &a : objects_)
-        for (const auto &b : environment.getCollisionObjects())
-        {
-            if (!a->getAABB().overlap(b->getAABB()))
-                continue;
-            fcl::CollisionResultd result;
-            if (fcl::collide(a.get(), b.get(), request, result) > 0)
-                return true;
-        }
-    return false;
+    return anyTouch(objects_, environment.getCollisionObjects());
 }
