@@ -108,26 +108,40 @@ namespace
         std::cout << std::setprecision(3);
         for (const UrdfArm *arm : arms)
         {
+            // An open mesh bounds no volume to compare with: it is counted, not rated.
             std::vector<std::pair<double, std::string>> ratios;
-            std::size_t capsules = 0;
+            std::size_t capsules = 0, open = 0;
             for (const auto &mesh : arm->getMeshes())
             {
-                ratios.emplace_back(mesh.fit.getVolumeRatio(), mesh.link);
+                if (mesh.fit.getVolumeRatio() > 0.)
+                    ratios.emplace_back(mesh.fit.getVolumeRatio(), mesh.link);
+                else
+                    ++open;
                 capsules += mesh.fit.getCapsules().size();
             }
             std::sort(ratios.begin(), ratios.end());
             const std::size_t sharing = robotsOf[arm->getUrdfXml()].size();
             std::cout << "meshes     robot " << arm->getName()
                       << (sharing > 1 ? " (and " + std::to_string(sharing - 1) + " more of its URDF)" : "") << ": "
-                      << ratios.size() << " meshes in " << capsules << " capsules, fitted / mesh volume median "
-                      << ratios[ratios.size() / 2].first << ", worst " << ratios.back().first << " ("
-                      << ratios.back().second << ")\n";
+                      << arm->getMeshes().size() << " meshes in " << capsules << " capsules";
+            if (!ratios.empty())
+                std::cout << ", fitted / mesh volume median " << ratios[ratios.size() / 2].first << ", worst "
+                          << ratios.back().first << " (" << ratios.back().second << ")";
+            if (open > 0)
+                std::cout << ", " << open << " open (no volume to compare)";
+            std::cout << "\n";
         }
         const auto &environment = *si.getRobot(0)->getEnvironment();
         for (std::size_t k = 0; k < environment.getObstacles().size(); ++k)
             if (const auto &fit = environment.getBoxFit(k))
+            {
                 std::cout << "meshes     obstacle " << environment.getObstacles()[k].name << ": "
-                          << fit->getBoxes().size() << " boxes, fitted / mesh volume " << fit->getVolumeRatio() << "\n";
+                          << fit->getBoxes().size() << " boxes, ";
+                if (fit->getVolumeRatio() > 0.)
+                    std::cout << "fitted / mesh volume " << fit->getVolumeRatio() << "\n";
+                else
+                    std::cout << "open mesh (no volume to compare)\n";
+            }
         std::cout << std::defaultfloat;
     }
 
