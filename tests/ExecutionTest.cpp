@@ -2,6 +2,7 @@
    execution with delays, the trajectory file and the scenario files' "limits". */
 #include "TestProblems.h"
 
+#include "ompl_parc/execution/ExecutionCheck.h"
 #include "ompl_parc/execution/ExecutionSimulator.h"
 #include "ompl_parc/execution/TemporalPlanGraph.h"
 #include "ompl_parc/execution/TimeParameterization.h"
@@ -250,4 +251,39 @@ TEST(MotionLimitsInScenarioFiles, AreReadCheckedAndWrittenBack)
                      std::string(R"("velocity": 0.5, "acceleration": [0.25])").size(), bad);
         EXPECT_THROW(ScenarioFile::fromJson(text, ""), ompl::Exception) << bad;
     }
+}
+
+TEST(ExecutionCheck, SteadyStretchesAreOnePieceAndEveryTimestepKeepsTheMotion)
+{
+    // Two discs: one cruising at a constant velocity, then waiting; one on a parabola (every sample bends).
+    const auto problem = scenarios::createScenario("mobile_cross", 2);
+    const ExecutionCheck check(problem);
+    const auto motion = [](std::size_t i, double t, double *out)
+    {
+        if (i == 0)
+        {
+            const double s = std::min(t, 4.);
+            out[0] = -3. + 0.5 * s;
+            out[1] = 0.25 * s;
+            return;
+        }
+        out[0] = 0.1 * t * t - 3.;
+        out[1] = -1.;
+    };
+    const MultiRobotPlan plan = check.sample(0., 6., 1., motion);
+    const double dt = 0.999 / problem.getSpaceInformation()->getResolution();
+    ASSERT_EQ(plan.getMakespan(), static_cast<std::size_t>(std::ceil(6. / dt)));
+    // The cruise and the wait: a few pieces, whatever the duration (the start, the cruise, the sample where it
+    // stops, the wait); the parabola bends at every sample: a piece each.
+    EXPECT_LE(plan.getPath(0).getPieceCount(), 4u);
+    EXPECT_GE(plan.getPath(1).getPieceCount(), plan.getMakespan() / 2);
+    std::vector<double> q(2), expected(2);
+    for (std::size_t t = 0; t <= plan.getMakespan(); ++t)
+        for (std::size_t i = 0; i < 2; ++i)
+        {
+            plan.getConfig(i, t, q.data());
+            motion(i, std::min(6., static_cast<double>(t) * dt), expected.data());
+            EXPECT_NEAR(q[0], expected[0], 1e-9) << i << " " << t;
+            EXPECT_NEAR(q[1], expected[1], 1e-9) << i << " " << t;
+        }
 }

@@ -38,14 +38,41 @@ ompl_parc::MultiRobotPlan ompl_parc::ExecutionCheck::sample(double start, double
     const auto steps = static_cast<std::size_t>(std::ceil((end - start) / dt));
     if (steps > MultiRobotPlan::MAX_TIMESTEP)
         throw std::invalid_argument("ExecutionCheck: the motion needs more samples than a plan may hold");
+    // Samples where the motion is straight and steady (cruising, waiting) are merged into one piece: memory grows
+    // with the motion's bends, not its length. A run goes on while each sample stays within EPSILON of the line its
+    // first step sets, so the plan's grid states are within 2 EPSILON of the motion's: rounding, next to the
+    // half-timestep tolerance of the check.
+    const double epsilon = 1e-9 / si.getResolution();
+    const auto at = [&](std::size_t s) { return s == steps ? end : start + static_cast<double>(s) * dt; };
     MultiRobotPlan plan(si);
     for (std::size_t i = 0; i < si.getRobotCount(); ++i)
     {
         const unsigned int dim = si.getRobot(i)->getDimension();
-        std::vector<double> flat((steps + 1) * dim);
-        for (std::size_t s = 0; s <= steps; ++s)
-            motion(i, s == steps ? end : start + static_cast<double>(s) * dt, flat.data() + s * dim);
-        plan.setRobotPath(i, flat);
+        std::vector<double> anchor(dim), first(dim), last(dim), current(dim);
+        TimedPath path(dim);
+        motion(i, start, anchor.data());
+        path.appendHold(anchor.data(), 0);
+        std::size_t anchorStep = 0, lastStep = 0;
+        for (std::size_t s = 1; s <= steps; ++s)
+        {
+            motion(i, at(s), current.data());
+            bool onLine = s > anchorStep + 1;
+            for (unsigned int k = 0; k < dim && onLine; ++k)
+                onLine = std::abs(anchor[k] + static_cast<double>(s - anchorStep) * (first[k] - anchor[k]) -
+                                  current[k]) <= epsilon;
+            if (!onLine && s > anchorStep + 1)
+            {
+                path.appendMotion(anchor.data(), last.data(), lastStep - anchorStep);
+                anchor = last;
+                anchorStep = lastStep;
+            }
+            if (s == anchorStep + 1)
+                first = current;
+            last = current;
+            lastStep = s;
+        }
+        path.appendMotion(anchor.data(), last.data(), lastStep - anchorStep);
+        plan.setPath(i, std::move(path));
     }
     return plan;
 }

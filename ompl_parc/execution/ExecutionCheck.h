@@ -28,7 +28,9 @@ namespace ompl_parc
 
         /** \brief The motion over [\e start, \e end] as a plan: samples \e dt apart, \e dt such that a robot
             moving no faster than \e maxSpeed (in its configuration space's distance per second) moves at most
-            1/resolution between two. */
+            1/resolution between two; a robot's samples along a straight, steady stretch (cruising, waiting) are
+            one piece of the plan (within 2e-9 of a timestep), so its memory grows with the motion's bends, not with
+            its duration. */
         MultiRobotPlan sample(double start, double end, double maxSpeed, const Motion &motion) const;
 
         /** \brief Validate sample(); a violation's time (ValidationReport::time) is in seconds. */
