@@ -13,7 +13,8 @@ if [ "${OMPL_PARC_SKIP_SANITIZERS:-0}" != "1" ]; then
     echo "== sanitizer pass: ASan + UBSan =="
     bash scripts/build.sh build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOMPL_PARC_SANITIZE="address;undefined" \
         -DOMPL_PARC_BUILD_BENCHMARKS=OFF
-    ctest --test-dir build-asan --output-on-failure -j"$(nproc)"
+    LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp print_suppressions=0" ctest --test-dir build-asan \
+        --output-on-failure -j"$(nproc)"
     echo "== sanitizer pass: TSan on the parallel planners and runtime =="
     # Only what runs under TSan: the test binary and ompl_parc_mpi (target sanitized_checks).
     bash scripts/build.sh build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOMPL_PARC_SANITIZE=thread \
