@@ -211,6 +211,12 @@ namespace
         return out;
     }
 
+    /** \e path as the scenario file names it: a relative path is from \e folder, the file's folder. */
+    std::filesystem::path inFolder(const std::filesystem::path &path, const std::string &folder)
+    {
+        return path.is_relative() ? std::filesystem::path(folder) / path : path;
+    }
+
     /** Parse obstacle \e value (at \e where, index \e index) into \e environment. */
     void addObstacle(const json &value, const std::string &where, std::size_t index, const std::string &folder,
                      ompl_parc::Environment &environment)
@@ -275,7 +281,7 @@ namespace
             try
             {
                 o.mesh = ompl_parc::TriangleMesh::read(
-                    (file.is_relative() ? std::filesystem::path(folder) / file : file).lexically_normal().string(),
+                    inFolder(file, folder).lexically_normal().string(),
                     scale);
             }
             catch (const ompl::Exception &e)
@@ -379,7 +385,7 @@ namespace
             return it->second();
         }
         std::filesystem::path file = nonEmptyString(value.at("urdf_file"), where + ".urdf_file");
-        file = file.is_relative() ? std::filesystem::path(folder) / file : file;
+        file = inFolder(file, folder);
         urdfFolder = file.parent_path().string();
         return ompl_parc::UrdfArm::readFile(file.string());
     }
@@ -415,8 +421,7 @@ namespace
     {
         const auto fromScenario = [&](const std::string &path)
         {
-            const std::filesystem::path p(path);
-            return (p.is_relative() ? std::filesystem::path(folder) / p : p).lexically_normal().string();
+            return inFolder(path, folder).lexically_normal().string();
         };
         std::string meshFolder = urdfFolder;
         if (value.contains("mesh_folder"))
@@ -455,7 +460,7 @@ namespace
             return nullptr;
         const std::filesystem::path file = nonEmptyString(value.at("srdf_file"), where + ".srdf_file");
         return std::make_shared<ompl_parc::Srdf>(
-            ompl_parc::Srdf::read((file.is_relative() ? std::filesystem::path(folder) / file : file).string()));
+            ompl_parc::Srdf::read(inFolder(file, folder).string()));
     }
 
     /** The robot described by \e value; its start and goal go to \e start and \e goal. */

@@ -29,13 +29,13 @@ ompl_parc::FclBodies::FclBodies(const MultiRobotSpaceInformation &si, const std:
         selfPairs_.push_back(&si.getRobot(i)->getSelfCollisionPairs());
     }
     first_.push_back(parts_.size());
-    for (const auto &o : si.getEnvironment()->getObstacles())
+    // The environment's own FCL objects (queries only read them): a mesh obstacle's hierarchy is built once.
+    const auto &environment = *si.getEnvironment();
+    for (std::size_t k = 0; k < environment.getObstacles().size(); ++k)
     {
-        Obstacle obstacle{Environment::createGeometry(o), o.pose, {}};
-        fcl::CollisionObjectd object(obstacle.geometry, o.pose);
-        object.computeAABB();
-        obstacle.box = Eigen::AlignedBox3d(object.getAABB().min_, object.getAABB().max_);
-        obstacles_.push_back(std::move(obstacle));
+        const fcl::CollisionObjectd &object = *environment.getCollisionObjects()[k];
+        obstacles_.push_back({object.collisionGeometry(), environment.getObstacles()[k].pose,
+                              Eigen::AlignedBox3d(object.getAABB().min_, object.getAABB().max_)});
     }
     swept_.capsule = std::make_shared<fcl::Capsuled>(1., 1.);
 }

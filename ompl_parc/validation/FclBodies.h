@@ -64,7 +64,7 @@ namespace ompl_parc
 
         struct Obstacle
         {
-            std::shared_ptr<fcl::CollisionGeometryd> geometry;
+            std::shared_ptr<const fcl::CollisionGeometryd> geometry;
             fcl::Transform3d pose;
             Eigen::AlignedBox3d box;
         };
