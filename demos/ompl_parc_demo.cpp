@@ -212,8 +212,14 @@ namespace
             const std::string team = propertyOf(planner, "smoothing_team_replan STRING");
             report.teamReplanned = team == "kept" || team == "not kept";
             report.teamReplanKept = team == "kept";
+            const std::string solve = propertyOf(planner, "smoothing_team_solve STRING");
+            report.teamSolveTried = solve == "kept" || solve == "not kept" || solve == "not solved";
+            report.teamSolved = solve == "kept" || solve == "not kept";
+            report.teamSolveKept = solve == "kept";
+            report.teamSolveSeconds = std::stod("0" + propertyOf(planner, "smoothing_team_solve_time REAL"));
             // Every kind kept, as kept() counts them, the team replan apart.
-            report.shortcuts = count("smoothing_shortcuts INTEGER") - (report.teamReplanKept ? 1 : 0);
+            report.shortcuts = count("smoothing_shortcuts INTEGER") - (report.teamReplanKept ? 1 : 0) -
+                               (report.teamSolveKept ? 1 : 0);
         }
         else
         {
@@ -231,9 +237,13 @@ namespace
                 return;
             }
         }
-        const std::size_t teamKept = report.teamReplanKept ? 1 : 0;
-        std::cout << "smoothing  " << report.seconds << " s (--smooth " << budget << "): "
-                  << (report.teamReplanned ? (teamKept != 0 ? "team replanned, " : "team replan not kept, ") : "")
+        const std::size_t teamKept = (report.teamReplanKept ? 1 : 0) + (report.teamSolveKept ? 1 : 0);
+        std::ostringstream solve;
+        if (report.teamSolveTried)
+            solve << "whole-team solve " << (report.teamSolveKept ? "kept" : report.teamSolved ? "not kept" : "failed")
+                  << " (" << report.teamSolveSeconds << " s), ";
+        std::cout << "smoothing  " << report.seconds << " s (--smooth " << budget << "): " << solve.str()
+                  << (report.teamReplanned ? (report.teamReplanKept ? "team replanned, " : "team replan not kept, ") : "")
                   << report.kept() - teamKept << " of " << report.attempts
                   << " shortcuts and replans kept; before it, makespan " << report.makespanBefore << ", sum of costs "
                   << report.sumOfCostsBefore << "\n";

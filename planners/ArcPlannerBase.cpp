@@ -63,6 +63,7 @@ ompl_parc::ArcPlannerBase::ArcPlannerBase(const ob::SpaceInformationPtr &si, con
     setProfile("auto");
     smoothing_.declareParameter(*this);
     smoothing_.setReplanner([] { return PrioritizedSTRRTSolver::makeReplanner(); });
+    smoothing_.setTeamSolver(&LatticeMapfSolver::makeTeamSolver);
     smoothing_.setTeamReplanShare(0.5);
     declareParam<unsigned int>("window", this, &ArcPlannerBase::setWindow, &ArcPlannerBase::getWindow, "1:10:2000");
     declareParam<std::string>("growth", this, &ArcPlannerBase::setGrowth, &ArcPlannerBase::getGrowth,
@@ -405,8 +406,9 @@ void ompl_parc::ArcPlannerBase::improve(const ob::PlannerTerminationCondition &p
     };
     report(*smoothed_);
     reportTo_->reachStage(ArcProgress::Stage::SMOOTHING);
-    const PlanImprover improver(mrsi_, objective_,
-                                [](bool shuffle) { return PrioritizedSTRRTSolver::makeReplanner(shuffle); });
+    PlanImprover improver(mrsi_, objective_,
+                          [](bool shuffle) { return PrioritizedSTRRTSolver::makeReplanner(shuffle); });
+    improver.setTeamSolver(&LatticeMapfSolver::makeTeamSolver);
     improvement_ = improver.improve(*smoothed_, workspace_->getPool(), ptc, mixSeed(loop_->getSeed(), 0xa117), report);
     OMPL_INFORM("%s: %zu anytime rounds, %zu better plans; the best has %s %zu", getName().c_str(),
                 improvement_->rounds, improvement_->improvements, getObjective().c_str(),

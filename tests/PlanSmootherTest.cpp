@@ -4,6 +4,7 @@
 #include "ompl_parc/planners/ORPARC.h"
 #include "ompl_parc/planners/PARC.h"
 #include "ompl_parc/planners/PrioritizedSTRRT.h"
+#include "ompl_parc/planners/subproblem/LatticeMapfSolver.h"
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
 #include "ompl_parc/quality/PlanQuality.h"
 #include "ompl_parc/quality/PlanSmoother.h"
@@ -126,6 +127,56 @@ TEST(PlanSmoother, ATeamReplanUndoesTheWaitsOfARepairChainAndStaysValid)
     EXPECT_TRUE(report.teamReplanKept);
     EXPECT_LT(plan.getMakespan() * 2, before.getMakespan());
     EXPECT_EQ(report.makespanAfter, plan.getMakespan());
+}
+
+TEST(PlanSmoother, AWholeTeamLatticePlanReplacesTheRepairsOfADenseCrossing)
+{
+    // Crossing 24, instance 3 (a generated family): ARC's repairs chain waits through the crossing, and the
+    // prioritised team replan does not finish in the default half second. The team solver (LaCAM on a lattice) plans
+    // the whole team in milliseconds; the smoother keeps its plan when it is shorter, then shortcuts it. Validated.
+    const MultiRobotProblem problem = scenarios::generateFamilyInstance("crossing", 24, 3);
+    const auto &si = problem.getSpaceInformation();
+    ARC arc(si);
+    arc.setSeed(1);
+    ASSERT_EQ(test::solveWith(arc, problem), ob::PlannerStatus::EXACT_SOLUTION);
+    MultiRobotPlan plan = arc.getPlan();
+    const MultiRobotPlan before = plan;
+    PlanSmoother smoother(si, 7);
+    smoother.setTeamSolver(LatticeMapfSolver::makeTeamSolver());
+    smoother.setTeamReplanTime(10.);  // the lattice plan takes some 20 ms here
+    const SmoothingReport report = smoother.smooth(plan, ob::timedPlannerTerminationCondition(5.));
+    const auto check = SolutionValidator(problem).validate(plan);
+    EXPECT_TRUE(check.valid) << check.message;
+    expectSameEndpoints(before, plan);
+    EXPECT_TRUE(report.teamSolveTried);
+    EXPECT_TRUE(report.teamSolved);
+    EXPECT_TRUE(report.teamSolveKept);
+    EXPECT_FALSE(report.teamReplanned);  // no replanner
+    EXPECT_LT(plan.getMakespan() * 3, before.getMakespan());
+    EXPECT_EQ(report.makespanAfter, plan.getMakespan());
+}
+
+TEST(PlanSmoother, TheTeamSolverDeclinesArmsAndTheSmootherGoesOn)
+{
+    // A lattice is for translating robots: on planar arms the team solver finds nothing at once and the shortcuts
+    // still run; the plan stays valid and no longer.
+    const MultiRobotProblem problem = scenarios::createPlanarCross(4);
+    const auto &si = problem.getSpaceInformation();
+    ARC arc(si);
+    arc.setSeed(1);
+    ASSERT_EQ(test::solveWith(arc, problem), ob::PlannerStatus::EXACT_SOLUTION);
+    MultiRobotPlan plan = arc.getPlan();
+    const MultiRobotPlan before = plan;
+    PlanSmoother smoother(si, 3);
+    smoother.setTeamSolver(LatticeMapfSolver::makeTeamSolver());
+    smoother.setTeamReplanTime(5.);
+    const SmoothingReport report = smoother.smooth(plan, ob::timedPlannerTerminationCondition(5.));
+    EXPECT_TRUE(report.teamSolveTried);
+    EXPECT_FALSE(report.teamSolved);
+    EXPECT_LT(report.teamSolveSeconds, 1.);
+    EXPECT_GT(report.attempts, 0u);
+    EXPECT_TRUE(SolutionValidator(problem).validate(plan).valid);
+    EXPECT_LE(plan.getMakespan(), before.getMakespan());
 }
 
 TEST(PlanSmoother, RefusesAPlanWithAConflict)

@@ -57,6 +57,8 @@ ompl_parc::ImprovementReport ompl_parc::PlanImprover::improve(MultiRobotPlan &pl
                 PlanSmoother smoother(si_, mixSeed(seed, round * workers + worker));
                 smoother.setObjective(objective_);
                 smoother.setReplanner(solvers[worker]);
+                if (teamSolver_)
+                    smoother.setTeamSolver(teamSolver_());
                 smoother.setTeamReplanTime(0.5 * seconds);
                 smoother.setTeamReplanMemory(memories[worker].get());
                 // Once worker 0's team replan in the team's order has ended, it tries shuffled orders too: the

@@ -45,6 +45,10 @@ namespace ompl_parc
         PlanImprover(MultiRobotSpaceInformationPtr si, PlanObjective objective,
                      std::function<SubproblemSolverPtr(bool shuffle)> replanner);
 
+        /** \brief Give every worker's smoother in every round a team solver made by \e factory
+            (PlanSmoother::setTeamSolver()): each round's seeds give it other lattices, so other whole-team plans. */
+        void setTeamSolver(std::function<SubproblemSolverPtr()> factory) { teamSolver_ = std::move(factory); }
+
         /** \brief Improve \e plan (conflict-free) in place with the workers of \e pool until \e ptc fires or it
             meets its bound, drawing every seed from \e seed; \e callback (if set) receives each better plan as it
             is found, on the calling thread. */
@@ -65,6 +69,7 @@ namespace ompl_parc
         MultiRobotSpaceInformationPtr si_;
         PlanObjective objective_;
         std::function<SubproblemSolverPtr(bool shuffle)> replanner_;
+        std::function<SubproblemSolverPtr()> teamSolver_;
     };
 }  // namespace ompl_parc
 

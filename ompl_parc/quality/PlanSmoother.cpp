@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <limits>
 #include <cmath>
+#include <numeric>
 #include <optional>
 #include <string>
 
@@ -52,12 +53,26 @@ ompl_parc::SmoothingReport ompl_parc::PlanSmoother::smooth(MultiRobotPlan &plan,
     for (std::size_t i = 0; i < n; ++i)
         bound_[i] = PlanQuality::straightLineSteps(*si_, plan, i);
 
-    if (replanner_ && teamReplanTime_ > 0.)
+    if (teamReplanTime_ > 0. && (replanner_ || teamSolver_))
     {
-        report.teamReplanned = true;
         const auto budget =
             ob::plannerOrTerminationCondition(ptc, ob::timedPlannerTerminationCondition(teamReplanTime_));
-        report.teamReplanKept = tryTeamReplan(plan, budget, report.teamReplanDone);
+        if (teamSolver_)
+        {
+            const auto solveStarted = ompl::time::now();
+            report.teamSolveTried = true;
+            // At most half the team replan's time: where the lattice fails (no free point near a robot), the
+            // prioritised replan keeps the other half.
+            report.teamSolveKept = tryTeamSolve(
+                plan, ob::plannerOrTerminationCondition(budget, ob::timedPlannerTerminationCondition(0.5 * teamReplanTime_)),
+                report.teamSolved);
+            report.teamSolveSeconds = ompl::time::seconds(ompl::time::now() - solveStarted);
+        }
+        if (replanner_)
+        {
+            report.teamReplanned = true;
+            report.teamReplanKept = tryTeamReplan(plan, budget, report.teamReplanDone);
+        }
     }
     for (std::size_t stalled = 0; stalled < getStallLimit() && !ptc();)
     {
@@ -240,8 +255,7 @@ bool ompl_parc::PlanSmoother::tryReplan(MultiRobotPlan &plan, std::size_t robot,
     return keepIfClear(plan, {robot}, std::move(changed), t1, nullptr);
 }
 
-bool ompl_parc::PlanSmoother::tryTeamReplan(MultiRobotPlan &plan, const ob::PlannerTerminationCondition &ptc,
-                                            bool &done)
+ompl_parc::Subproblem ompl_parc::PlanSmoother::wholeTeam(const MultiRobotPlan &plan)
 {
     Subproblem whole;
     whole.global = true;
@@ -254,20 +268,40 @@ bool ompl_parc::PlanSmoother::tryTeamReplan(MultiRobotPlan &plan, const ob::Plan
         plan.getConfig(i, plan.getArrival(i), whole.goals.back().data());
     }
     whole.windowEnd = plan.getMakespan();
+    return whole;
+}
+
+bool ompl_parc::PlanSmoother::keepIfBetter(MultiRobotPlan &plan, std::vector<TimedPath> paths)
+{
+    MultiRobotPlan candidate(*si_);
+    for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
+        candidate.setPath(i, paths[i]);
+    if (objectiveKey(candidate, objective_) >= objectiveKey(plan, objective_))
+        return false;
+    std::vector<std::size_t> team(plan.getRobotCount());
+    std::iota(team.begin(), team.end(), 0);
+    return keepIfClear(plan, team, std::move(paths), 0, nullptr);
+}
+
+bool ompl_parc::PlanSmoother::tryTeamReplan(MultiRobotPlan &plan, const ob::PlannerTerminationCondition &ptc,
+                                            bool &done)
+{
+    Subproblem whole = wholeTeam(plan);
     whole.sampleCap = TEAM_REPLAN_SAMPLES;
     Patch patch;
     const auto seed = static_cast<std::uint_fast32_t>(rng_.uniformInt(1, std::numeric_limits<int>::max()));
     const bool solved = replanner_->resume(*si_, whole, ptc, seed, patch, teamReplanMemory_);
     done = solved || !ptc();
-    if (!solved)
-        return false;
-    MultiRobotPlan candidate(*si_);
-    for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
-        candidate.setPath(i, patch.paths[i]);
-    if (std::make_pair(candidate.getMakespan(), candidate.getSumOfCosts()) >=
-        std::make_pair(plan.getMakespan(), plan.getSumOfCosts()))
-        return false;
-    return keepIfClear(plan, whole.robots, std::move(patch.paths), 0, nullptr);
+    return solved && keepIfBetter(plan, std::move(patch.paths));
+}
+
+bool ompl_parc::PlanSmoother::tryTeamSolve(MultiRobotPlan &plan, const ob::PlannerTerminationCondition &ptc,
+                                           bool &solved)
+{
+    Patch patch;
+    const auto seed = static_cast<std::uint_fast32_t>(rng_.uniformInt(1, std::numeric_limits<int>::max()));
+    solved = teamSolver_->solve(*si_, wholeTeam(plan), ptc, seed, patch);
+    return solved && keepIfBetter(plan, std::move(patch.paths));
 }
 
 bool ompl_parc::PlanSmoother::motionValid(std::size_t robot, const double *from, const double *to)

@@ -29,13 +29,19 @@ namespace ompl_parc
         std::size_t replans{0}, replansKept{0};
         /** \brief Whether the whole team was replanned (PlanSmoother::setTeamReplanTime()), and whether it was kept. */
         bool teamReplanned{false}, teamReplanKept{false};
+        /** \brief Whether the team solver (PlanSmoother::setTeamSolver()) solved the whole team, and whether its plan
+            was kept. */
+        bool teamSolveTried{false}, teamSolved{false}, teamSolveKept{false};
+        /** \brief Seconds the team solver took. */
+        double teamSolveSeconds{0.};
         /** \brief Whether the team replan ended (solved, or failed in every order it tries) rather than being cut by
             its time: with a memory (PlanSmoother::setTeamReplanMemory()) a cut one goes on at the next smooth(). */
         bool teamReplanDone{false};
         /** \brief Changes kept, of every kind. */
         std::size_t kept() const
         {
-            return shortcuts + compositeShortcuts + straightenings + replansKept + (teamReplanKept ? 1 : 0);
+            return shortcuts + compositeShortcuts + straightenings + replansKept + (teamReplanKept ? 1 : 0) +
+                   (teamSolveKept ? 1 : 0);
         }
         double seconds{0.};
     };
@@ -86,6 +92,14 @@ namespace ompl_parc
             default): no team replan. */
         void setTeamReplanTime(double seconds) { teamReplanTime_ = seconds; }
 
+        /** \brief Before the team replan, solve the whole team from the plan's starts to its goals with \e solver, a
+            coupled one (LatticeMapfSolver for discs: the whole team on one lattice, in milliseconds where prioritised
+            planning needs seconds among dense teams), under half the team replan's time (setTeamReplanTime()); keep its
+            plan as a team replan's, if better by the objective and conflict-free. The team replan then has to beat it.
+            A repair's patch holds the robots of its window together for as long as the slowest needs; a plan made
+            for the whole team at once has no such chain of waits. Null (the default): none. */
+        void setTeamSolver(SubproblemSolverPtr solver) { teamSolver_ = std::move(solver); }
+
         /** \brief Let the team replan go on from where the last smooth() with \e memory (the replanner's
             SubproblemSolver::makeMemory(), kept to one thread and one team) left it when its time ran out: repeated
             short smoothings (PlanImprover's rounds) add up to one long team replan. Null (the default): each
@@ -126,6 +140,17 @@ namespace ompl_parc
             \e done: whether the replan ended otherwise than by \e ptc (SmoothingReport::teamReplanDone). */
         bool tryTeamReplan(MultiRobotPlan &plan, const ompl::base::PlannerTerminationCondition &ptc, bool &done);
 
+        /** \brief Solve the whole team with the team solver (setTeamSolver()) under \e ptc; \e solved receives
+            whether it found a plan. Kept if better and conflict-free. */
+        bool tryTeamSolve(MultiRobotPlan &plan, const ompl::base::PlannerTerminationCondition &ptc, bool &solved);
+
+        /** \brief The whole team as one subproblem: every robot from the plan's start to its goal. */
+        static Subproblem wholeTeam(const MultiRobotPlan &plan);
+
+        /** \brief Keep \e paths (one per robot) as the plan if they are better by the objective (then by the other
+            measure) and conflict-free. */
+        bool keepIfBetter(MultiRobotPlan &plan, std::vector<TimedPath> paths);
+
         /** \brief Keep \e changed (new paths of the robots of \e team, the plan unchanged before \e t1) if it is
             conflict-free, else put the old paths back; on a conflict, \e blocker (if given) receives the first
             robot outside the team hit. */
@@ -145,7 +170,7 @@ namespace ompl_parc
         std::optional<std::size_t> pickRobot(const MultiRobotPlan &plan);
 
         MultiRobotSpaceInformationPtr si_;
-        SubproblemSolverPtr replanner_;
+        SubproblemSolverPtr replanner_, teamSolver_;
         double teamReplanTime_{0.};
         PlanObjective objective_{PlanObjective::MAKESPAN};
         SubproblemSolver::Memory *teamReplanMemory_{nullptr};

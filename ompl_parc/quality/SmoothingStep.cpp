@@ -36,10 +36,10 @@ void ompl_parc::SmoothingStep::apply(const MultiRobotSpaceInformationPtr &si, Mu
     {
         PlanSmoother smoother(si, seed);
         if (replanner_)
-        {
             smoother.setReplanner(replanner_());
-            smoother.setTeamReplanTime(teamReplanShare_ * budget_);
-        }
+        if (teamSolver_ && teamReplanShare_ > 0.)
+            smoother.setTeamSolver(teamSolver_());
+        smoother.setTeamReplanTime(teamReplanShare_ * budget_);
         {
             const InnerPlannerLog::Scope inner;  // the replans' planners
             report_ = smoother.smooth(plan, budget);
@@ -69,6 +69,11 @@ void ompl_parc::SmoothingStep::addProperties(const MultiRobotSpaceInformation &s
         p["smoothing_shortcuts INTEGER"] = std::to_string(smoothing->kept());
         p["smoothing_team_replan STRING"] =
             smoothing->teamReplanned ? (smoothing->teamReplanKept ? "kept" : "not kept") : "none";
+        p["smoothing_team_solve STRING"] =
+            !smoothing->teamSolveTried
+                ? "none"
+                : (smoothing->teamSolveKept ? "kept" : (smoothing->teamSolved ? "not kept" : "not solved"));
+        p["smoothing_team_solve_time REAL"] = std::to_string(smoothing->teamSolveSeconds);
         p["makespan_unsmoothed INTEGER"] = std::to_string(smoothing->makespanBefore);
         p["sum_of_costs_unsmoothed INTEGER"] = std::to_string(smoothing->sumOfCostsBefore);
     }

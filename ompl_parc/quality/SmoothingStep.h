@@ -31,6 +31,10 @@ namespace ompl_parc
             would change the planning of a solve that does not smooth.) */
         void setReplanner(std::function<SubproblemSolverPtr()> factory) { replanner_ = std::move(factory); }
 
+        /** \brief Makes the smoother's team solver (PlanSmoother::setTeamSolver()) when a smoothing with a team replan
+            share starts; the ARC family gives LatticeMapfSolver. */
+        void setTeamSolver(std::function<SubproblemSolverPtr()> factory) { teamSolver_ = std::move(factory); }
+
         /** \brief The share of the budget the smoother may spend replanning the whole team first
             (PlanSmoother::setTeamReplanTime()); 0 (the default): none. A planner that plans prioritised itself
             has nothing to gain from it. */
@@ -58,7 +62,7 @@ namespace ompl_parc
 
       private:
         double budget_{0.}, teamReplanShare_{0.};
-        std::function<SubproblemSolverPtr()> replanner_;
+        std::function<SubproblemSolverPtr()> replanner_, teamSolver_;
         std::optional<SmoothingReport> report_;
     };
 }  // namespace ompl_parc

@@ -325,7 +325,15 @@ namespace
     }
 }  // namespace
 
-ompl_parc::LatticeMapfSolver::LatticeMapfSolver(std::size_t maxPoints) : maxPoints_(maxPoints) {}
+ompl_parc::LatticeMapfSolver::LatticeMapfSolver(std::size_t maxPoints, double wideSeconds)
+  : maxPoints_(maxPoints), wideSeconds_(wideSeconds)
+{
+}
+
+ompl_parc::SubproblemSolverPtr ompl_parc::LatticeMapfSolver::makeTeamSolver()
+{
+    return std::make_shared<LatticeMapfSolver>(std::size_t(1) << 18, 0.1);
+}
 
 bool ompl_parc::LatticeMapfSolver::applies(const MultiRobotSpaceInformation &si, const std::vector<std::size_t> &robots)
 {
@@ -395,11 +403,15 @@ bool ompl_parc::LatticeMapfSolver::solve(const MultiRobotSpaceInformation &si, c
         const double step = (largest > 0. ? 2.02 * largest : 0.1) * (wide ? std::sqrt(2.) : 1.);
         const auto lattice =
             buildLattice(low, high, step, free, move, robots, subproblem, reaches, maxPoints_, rng, ptc);
+        const auto searchStop = wide && std::isfinite(wideSeconds_)
+                                    ? ob::plannerOrTerminationCondition(
+                                          ptc, ob::timedPlannerTerminationCondition(wideSeconds_))
+                                    : ptc;
         if (!lattice)
             continue;
         const LatticeGraph &graph = *lattice->graph;
         ConfigurationSearch search(graph);
-        const auto steps = search.solve(lattice->entry.vertices, lattice->exit.vertices, ptc, seed);
+        const auto steps = search.solve(lattice->entry.vertices, lattice->exit.vertices, searchStop, seed);
         if (steps.empty())
             continue;
         if (!team)
