@@ -33,6 +33,21 @@ TEST(LatticeMapfSolver, SolvesDenseCrossingsWhole)
     }
 }
 
+TEST(LatticeMapfSolver, AWideSearchCutByItsTimeLeavesTheRestToTheTightLattice)
+{
+    // With no time for the wide lattice's search, the tight lattice plans the crossing of 48: valid, and slower
+    // (its turns wait sub-steps), which shows the tight one made it.
+    const auto problem = scenarios::generateFamilyInstance("crossing", 48, 0);
+    const auto sub = wholeProblem(problem);
+    const auto &si = *problem.getSpaceInformation();
+    Patch wide, tight;
+    ASSERT_TRUE(LatticeMapfSolver().solve(si, sub, ob::timedPlannerTerminationCondition(60.), 1, wide));
+    ASSERT_TRUE(LatticeMapfSolver(std::size_t(1) << 18, 0.).solve(si, sub, ob::timedPlannerTerminationCondition(60.),
+                                                                   1, tight));
+    EXPECT_TRUE(validatePatch(problem, sub, tight).valid);
+    EXPECT_GT(tight.getDuration(), wide.getDuration());
+}
+
 TEST(LatticeMapfSolver, SameSeedSamePatchAndAWindowKeepsToItsEnds)
 {
     const auto problem = scenarios::generateFamilyInstance("rooms", 8, 2);

@@ -27,7 +27,8 @@ namespace ompl_parc
         objective until the termination condition fires or the plan meets its lower bound (PlanQuality).
 
         It works in rounds. In each round every worker of the pool smooths its own copy of the best plan so far with
-        a PlanSmoother of its own seed: first it goes on with its replan of the whole team (prioritised planning,
+        a PlanSmoother of its own seed: first it solves the whole team with the team solver (setTeamSolver()), then it
+        goes on with its replan of the whole team (prioritised planning,
         worker 0 first in the team's order, then each worker in shuffled orders), kept if better, then shortcuts
         and one-robot replans. The best of the workers' plans replaces the best so far if the objective is lower,
         and is reported to the callback. A round lasts ROUND_SECONDS x 2^round (at most MAX_ROUND_DOUBLINGS

@@ -298,10 +298,21 @@ bool ompl_parc::PlanSmoother::tryTeamReplan(MultiRobotPlan &plan, const ob::Plan
 bool ompl_parc::PlanSmoother::tryTeamSolve(MultiRobotPlan &plan, const ob::PlannerTerminationCondition &ptc,
                                            bool &solved)
 {
-    Patch patch;
-    const auto seed = static_cast<std::uint_fast32_t>(rng_.uniformInt(1, std::numeric_limits<int>::max()));
-    solved = teamSolver_->solve(*si_, wholeTeam(plan), ptc, seed, patch);
-    return solved && keepIfBetter(plan, std::move(patch.paths));
+    // Each seed gives the solver another lattice origin, and where the lattice's points fall in doorways and gaps
+    // decides how the team passes them: the best of a few tries is kept. A failed try has spent its time.
+    const Subproblem whole = wholeTeam(plan);
+    bool kept = false;
+    solved = false;
+    for (unsigned int k = 0; k < TEAM_SOLVE_TRIES && !ptc(); ++k)
+    {
+        Patch patch;
+        const auto seed = static_cast<std::uint_fast32_t>(rng_.uniformInt(1, std::numeric_limits<int>::max()));
+        if (!teamSolver_->solve(*si_, whole, ptc, seed, patch))
+            break;
+        solved = true;
+        kept = keepIfBetter(plan, std::move(patch.paths)) || kept;
+    }
+    return kept;
 }
 
 bool ompl_parc::PlanSmoother::motionValid(std::size_t robot, const double *from, const double *to)

@@ -110,6 +110,9 @@ namespace ompl_parc
             sum of costs. Shortcuts and one-robot replans make no robot arrive later, so they serve both. */
         void setObjective(PlanObjective objective) { objective_ = objective; }
 
+        /** \brief Seeds the team solver tries (setTeamSolver()), within its time, the best plan kept. */
+        static constexpr unsigned int TEAM_SOLVE_TRIES = 4;
+
         /** \brief Attempts in a row without gain before a replan (with a replanner). */
         static constexpr std::size_t REPLAN_PERIOD = 16;
         /** \brief The replanner's iteration cap per replan. */
