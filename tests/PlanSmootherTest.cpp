@@ -58,6 +58,15 @@ namespace
 #endif
     }
 
+    /** ARC's plan (seed 1) for \e problem; empty paths if it finds none. */
+    MultiRobotPlan arcPlanOf(const MultiRobotProblem &problem)
+    {
+        ARC arc(problem.getSpaceInformation());
+        arc.setSeed(1);
+        EXPECT_EQ(test::solveWith(arc, problem), ob::PlannerStatus::EXACT_SOLUTION);
+        return arc.getPlan();
+    }
+
     /** Every robot starts and ends where it did in \e before. */
     void expectSameEndpoints(const MultiRobotPlan &before, const MultiRobotPlan &after)
     {
@@ -111,10 +120,8 @@ TEST(PlanSmoother, ATeamReplanUndoesTheWaitsOfARepairChainAndStaysValid)
     // keeps it, then shortcuts it. Every plan validated.
     const MultiRobotProblem problem = scenarios::generateFamilyInstance("ring", 24, 1);
     const auto &si = problem.getSpaceInformation();
-    ARC arc(si);
-    arc.setSeed(1);
-    ASSERT_EQ(test::solveWith(arc, problem), ob::PlannerStatus::EXACT_SOLUTION);
-    MultiRobotPlan plan = arc.getPlan();
+    MultiRobotPlan plan = arcPlanOf(problem);
+    ASSERT_FALSE(plan.getPath(0).empty());
     const MultiRobotPlan before = plan;
     PlanSmoother smoother(si, 7);
     smoother.setReplanner(PrioritizedSTRRTSolver::makeReplanner());
@@ -136,10 +143,8 @@ TEST(PlanSmoother, AWholeTeamLatticePlanReplacesTheRepairsOfADenseCrossing)
     // the whole team in milliseconds; the smoother keeps its plan when it is shorter, then shortcuts it. Validated.
     const MultiRobotProblem problem = scenarios::generateFamilyInstance("crossing", 24, 3);
     const auto &si = problem.getSpaceInformation();
-    ARC arc(si);
-    arc.setSeed(1);
-    ASSERT_EQ(test::solveWith(arc, problem), ob::PlannerStatus::EXACT_SOLUTION);
-    MultiRobotPlan plan = arc.getPlan();
+    MultiRobotPlan plan = arcPlanOf(problem);
+    ASSERT_FALSE(plan.getPath(0).empty());
     const MultiRobotPlan before = plan;
     PlanSmoother smoother(si, 7);
     smoother.setTeamSolver(LatticeMapfSolver::makeTeamSolver());
@@ -162,10 +167,8 @@ TEST(PlanSmoother, TheTeamSolverDeclinesArmsAndTheSmootherGoesOn)
     // still run; the plan stays valid and no longer.
     const MultiRobotProblem problem = scenarios::createPlanarCross(4);
     const auto &si = problem.getSpaceInformation();
-    ARC arc(si);
-    arc.setSeed(1);
-    ASSERT_EQ(test::solveWith(arc, problem), ob::PlannerStatus::EXACT_SOLUTION);
-    MultiRobotPlan plan = arc.getPlan();
+    MultiRobotPlan plan = arcPlanOf(problem);
+    ASSERT_FALSE(plan.getPath(0).empty());
     const MultiRobotPlan before = plan;
     PlanSmoother smoother(si, 3);
     smoother.setTeamSolver(LatticeMapfSolver::makeTeamSolver());
