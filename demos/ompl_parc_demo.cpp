@@ -242,8 +242,9 @@ namespace
         if (report.teamSolveTried)
             solve << "whole-team solve " << (report.teamSolveKept ? "kept" : report.teamSolved ? "not kept" : "failed")
                   << " (" << report.teamSolveSeconds << " s), ";
-        std::cout << "smoothing  " << report.seconds << " s (--smooth " << budget << "): " << solve.str()
-                  << (report.teamReplanned ? (report.teamReplanKept ? "team replanned, " : "team replan not kept, ") : "")
+        const char *team =
+            report.teamReplanned ? (report.teamReplanKept ? "team replanned, " : "team replan not kept, ") : "";
+        std::cout << "smoothing  " << report.seconds << " s (--smooth " << budget << "): " << solve.str() << team
                   << report.kept() - teamKept << " of " << report.attempts
                   << " shortcuts and replans kept; before it, makespan " << report.makespanBefore << ", sum of costs "
                   << report.sumOfCostsBefore << "\n";

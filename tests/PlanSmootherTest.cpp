@@ -18,6 +18,7 @@
 #include <ompl/util/Time.h>
 
 #include <algorithm>
+#include <functional>
 #include <random>
 
 using namespace ompl_parc;
@@ -65,6 +66,32 @@ namespace
         arc.setSeed(1);
         EXPECT_EQ(test::solveWith(arc, problem), ob::PlannerStatus::EXACT_SOLUTION);
         return arc.getPlan();
+    }
+
+    /** Every robot starts and ends where it did in \e before. */
+    void expectSameEndpoints(const MultiRobotPlan &before, const MultiRobotPlan &after);
+
+    struct Smoothed
+    {
+        MultiRobotPlan before, plan;
+        SmoothingReport report;
+    };
+
+    /** ARC's plan for \e problem smoothed for up to 5 s by a smoother (seed 7) that \e configure sets up; checks that
+        the result is valid, starts and ends where the plan did, and that the report has its makespan. */
+    Smoothed smoothArcPlan(const MultiRobotProblem &problem, const std::function<void(PlanSmoother &)> &configure)
+    {
+        MultiRobotPlan plan = arcPlanOf(problem);
+        EXPECT_FALSE(plan.getPath(0).empty());
+        Smoothed s{plan, plan, {}};
+        PlanSmoother smoother(problem.getSpaceInformation(), 7);
+        configure(smoother);
+        s.report = smoother.smooth(s.plan, ob::timedPlannerTerminationCondition(5.));
+        const auto check = SolutionValidator(problem).validate(s.plan);
+        EXPECT_TRUE(check.valid) << check.message;
+        expectSameEndpoints(s.before, s.plan);
+        EXPECT_EQ(s.report.makespanAfter, s.plan.getMakespan());
+        return s;
     }
 
     /** Every robot starts and ends where it did in \e before. */
@@ -118,22 +145,15 @@ TEST(PlanSmoother, ATeamReplanUndoesTheWaitsOfARepairChainAndStaysValid)
     // of other repairs, far beyond their straight-line bounds. Replanning the whole team prioritised (the lattice
     // for discs) from the plan's own starts and goals finds a plan of a fraction of that makespan; the smoother
     // keeps it, then shortcuts it. Every plan validated.
-    const MultiRobotProblem problem = scenarios::generateFamilyInstance("ring", 24, 1);
-    const auto &si = problem.getSpaceInformation();
-    MultiRobotPlan plan = arcPlanOf(problem);
-    ASSERT_FALSE(plan.getPath(0).empty());
-    const MultiRobotPlan before = plan;
-    PlanSmoother smoother(si, 7);
-    smoother.setReplanner(PrioritizedSTRRTSolver::makeReplanner());
-    smoother.setTeamReplanTime(5.);  // the team replan takes well under 0.1 s here
-    const SmoothingReport report = smoother.smooth(plan, ob::timedPlannerTerminationCondition(5.));
-    const auto check = SolutionValidator(problem).validate(plan);
-    EXPECT_TRUE(check.valid) << check.message;
-    expectSameEndpoints(before, plan);
-    EXPECT_TRUE(report.teamReplanned);
-    EXPECT_TRUE(report.teamReplanKept);
-    EXPECT_LT(plan.getMakespan() * 2, before.getMakespan());
-    EXPECT_EQ(report.makespanAfter, plan.getMakespan());
+    const Smoothed s = smoothArcPlan(scenarios::generateFamilyInstance("ring", 24, 1),
+                                     [](PlanSmoother &smoother)
+                                     {
+                                         smoother.setReplanner(PrioritizedSTRRTSolver::makeReplanner());
+                                         smoother.setTeamReplanTime(5.);  // it takes well under 0.1 s here
+                                     });
+    EXPECT_TRUE(s.report.teamReplanned);
+    EXPECT_TRUE(s.report.teamReplanKept);
+    EXPECT_LT(s.plan.getMakespan() * 2, s.before.getMakespan());
 }
 
 TEST(PlanSmoother, AWholeTeamLatticePlanReplacesTheRepairsOfADenseCrossing)
@@ -141,24 +161,17 @@ TEST(PlanSmoother, AWholeTeamLatticePlanReplacesTheRepairsOfADenseCrossing)
     // Crossing 24, instance 3 (a generated family): ARC's repairs chain waits through the crossing, and the
     // prioritised team replan does not finish in the default half second. The team solver (LaCAM on a lattice) plans
     // the whole team in milliseconds; the smoother keeps its plan when it is shorter, then shortcuts it. Validated.
-    const MultiRobotProblem problem = scenarios::generateFamilyInstance("crossing", 24, 3);
-    const auto &si = problem.getSpaceInformation();
-    MultiRobotPlan plan = arcPlanOf(problem);
-    ASSERT_FALSE(plan.getPath(0).empty());
-    const MultiRobotPlan before = plan;
-    PlanSmoother smoother(si, 7);
-    smoother.setTeamSolver(LatticeMapfSolver::makeTeamSolver());
-    smoother.setTeamReplanTime(10.);  // the lattice plan takes some 20 ms here
-    const SmoothingReport report = smoother.smooth(plan, ob::timedPlannerTerminationCondition(5.));
-    const auto check = SolutionValidator(problem).validate(plan);
-    EXPECT_TRUE(check.valid) << check.message;
-    expectSameEndpoints(before, plan);
-    EXPECT_TRUE(report.teamSolveTried);
-    EXPECT_TRUE(report.teamSolved);
-    EXPECT_TRUE(report.teamSolveKept);
-    EXPECT_FALSE(report.teamReplanned);  // no replanner
-    EXPECT_LT(plan.getMakespan() * 3, before.getMakespan());
-    EXPECT_EQ(report.makespanAfter, plan.getMakespan());
+    const Smoothed s = smoothArcPlan(scenarios::generateFamilyInstance("crossing", 24, 3),
+                                     [](PlanSmoother &smoother)
+                                     {
+                                         smoother.setTeamSolver(LatticeMapfSolver::makeTeamSolver());
+                                         smoother.setTeamReplanTime(10.);  // some 20 ms a try here
+                                     });
+    EXPECT_TRUE(s.report.teamSolveTried);
+    EXPECT_TRUE(s.report.teamSolved);
+    EXPECT_TRUE(s.report.teamSolveKept);
+    EXPECT_FALSE(s.report.teamReplanned);  // no replanner
+    EXPECT_LT(s.plan.getMakespan() * 3, s.before.getMakespan());
 }
 
 TEST(PlanSmoother, TheTeamSolverDeclinesArmsAndTheSmootherGoesOn)

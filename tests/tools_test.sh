@@ -106,6 +106,8 @@ expect 2 "time-limit must be a number from 0 to 1e+07 (got '1e10')" "$bin/ompl_p
 # is refused; OMPL's own planners are smoothed by the demo; a 3D picture says it is a top view.
 expect 0 "smoothing  .*before it, makespan" "$bin/ompl_parc_demo" --scenario mobile_circle --robots 8 --seed 2
 expect 0 "validated  yes" "$bin/ompl_parc_demo" --scenario mobile_circle --robots 8 --planner rrtconnect --smooth 0.5
+# The whole-team solve on a dense crossing of discs: LaCAM's plan replaces the repairs' (validated as every plan).
+expect 0 "whole-team solve kept" "$bin/ompl_parc_demo" --scenario crossing --robots 24 --task 3 --smooth 3
 expect 0 "lower bound 1630" "$bin/ompl_parc_demo" --scenario mobile_circle --robots 8 --smooth 0
 expect 2 "smooth must be a number from 0 to 3600 (got '-1')" "$bin/ompl_parc_demo" --smooth -1
 expect 0 "3D problem: top view only" "$bin/ompl_parc_demo" --scenario panda_cage --robots 2 --param profile=panda \

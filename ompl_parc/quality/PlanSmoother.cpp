@@ -61,11 +61,11 @@ ompl_parc::SmoothingReport ompl_parc::PlanSmoother::smooth(MultiRobotPlan &plan,
         {
             const auto solveStarted = ompl::time::now();
             report.teamSolveTried = true;
-            // At most half the team replan's time: where the lattice fails (no free point near a robot), the
+            // At most half the team replan's time: where the lattice fails (its search does not finish), the
             // prioritised replan keeps the other half.
-            report.teamSolveKept = tryTeamSolve(
-                plan, ob::plannerOrTerminationCondition(budget, ob::timedPlannerTerminationCondition(0.5 * teamReplanTime_)),
-                report.teamSolved);
+            const auto half =
+                ob::plannerOrTerminationCondition(budget, ob::timedPlannerTerminationCondition(0.5 * teamReplanTime_));
+            report.teamSolveKept = tryTeamSolve(plan, half, report.teamSolved);
             report.teamSolveSeconds = ompl::time::seconds(ompl::time::now() - solveStarted);
         }
         if (replanner_)
