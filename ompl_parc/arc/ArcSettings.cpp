@@ -26,6 +26,7 @@ ompl_parc::ArcSettings ompl_parc::ArcSettings::profile(const std::string &name)
             s.minWindowGrowth = 1.25;
             s.solvers = Solvers::COMPOSITE;
             s.sequential = true;
+            s.shortenPatches = true;
         }
         return s;
     }

@@ -64,8 +64,11 @@ namespace ompl_parc
             stage. Off: every robot is planned, as the authors do. */
         bool straightInitial{true};
         /** \brief Shorten composite repair patches before they are spliced (OMPL's simplifier on the team's composite
-            path, bounded like the initial paths'): off by default, as in the paper; plan quality is PlanSmoother's
-            job after the solve (README: what shortening costs and gains). */
+            path, bounded like the initial paths'). Off in the mobile and planar profiles, as in the paper: there plan
+            quality is PlanSmoother's job after the solve, and shortening costs planning time (README). On in the
+            panda profile: an arm patch wanders in a team space of 14-28 dimensions, the smoother's shortcuts on 16
+            arms are few per second, and shortening halves the unsmoothed makespans of Panda Cage 8 and 16 at about
+            the same median time to the first solution (docs/results-plan-quality.md). */
         bool shortenPatches{false};
         /** \brief Add multi-agent path finding on a lattice (LatticeMapfSolver) to the hierarchies that have more than
             one solver: after composite RRT-Connect in COMPOSITE_FIRST, last in HIERARCHY. It applies to teams of
@@ -106,7 +109,8 @@ namespace ompl_parc
 
         /** \brief The authors' tuned values: "mobile" (w 200, linear +200, margin 2, min range 2, cap 5000),
             "planar" (w 100, exponential 1.05, endpoint step 10, margin 1, min range 0.5, cap 50000),
-            "panda" (as planar with w 20; ours: min window growth 1.25, composite RRT-Connect only). Throws
+            "panda" (as planar with w 20; ours: min window growth 1.25, composite RRT-Connect only, sequential,
+            patches shortened). Throws
             ompl::Exception for another name. */
         static ArcSettings profile(const std::string &name);
 
