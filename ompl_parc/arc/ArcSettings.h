@@ -67,8 +67,8 @@ namespace ompl_parc
             path, bounded like the initial paths'). Off in the mobile and planar profiles, as in the paper: there plan
             quality is PlanSmoother's job after the solve, and shortening costs planning time (README). On in the
             panda profile: an arm patch wanders in a team space of 14-28 dimensions, the smoother's shortcuts on 16
-            arms are few per second, and shortening halves the unsmoothed makespans of Panda Cage 8 and 16 at about
-            the same median time to the first solution (docs/results-plan-quality.md). */
+            arms are few per second, and shortening cuts the unsmoothed median makespans of Panda Cage 8 and 16 by
+            40 % and 51 % at about the same median time to the first solution (docs/results-plan-quality.md). */
         bool shortenPatches{false};
         /** \brief Add multi-agent path finding on a lattice (LatticeMapfSolver) to the hierarchies that have more than
             one solver: after composite RRT-Connect in COMPOSITE_FIRST, last in HIERARCHY. It applies to teams of
