@@ -22,6 +22,7 @@
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
 #include "ompl_parc/quality/PlanQuality.h"
 #include "ompl_parc/quality/PlanSmoother.h"
+#include "ompl_parc/quality/SmoothingStep.h"
 #include "ompl_parc/robots/UrdfArm.h"
 #include "ompl_parc/util/InnerPlannerLog.h"
 #include "ompl_parc/util/ParseNumber.h"
@@ -203,23 +204,10 @@ namespace
         SmoothingReport report;
         if (plannerSmooths)
         {
-            const auto count = [&](const std::string &name)
-            { return static_cast<std::size_t>(std::stoull("0" + propertyOf(planner, name))); };
-            report.seconds = std::stod("0" + propertyOf(planner, "smoothing_time REAL"));
-            report.makespanBefore = count("makespan_unsmoothed INTEGER");
-            report.sumOfCostsBefore = count("sum_of_costs_unsmoothed INTEGER");
-            report.attempts = count("smoothing_attempts INTEGER");
-            const std::string team = propertyOf(planner, "smoothing_team_replan STRING");
-            report.teamReplanned = team == "kept" || team == "not kept";
-            report.teamReplanKept = team == "kept";
-            const std::string solve = propertyOf(planner, "smoothing_team_solve STRING");
-            report.teamSolveTried = solve == "kept" || solve == "not kept" || solve == "not solved";
-            report.teamSolved = solve == "kept" || solve == "not kept";
-            report.teamSolveKept = solve == "kept";
-            report.teamSolveSeconds = std::stod("0" + propertyOf(planner, "smoothing_team_solve_time REAL"));
-            // Every kind kept, as kept() counts them, the team replan apart.
-            report.shortcuts = count("smoothing_shortcuts INTEGER") - (report.teamReplanKept ? 1 : 0) -
-                               (report.teamSolveKept ? 1 : 0);
+            ompl::base::PlannerData data(planner.getSpaceInformation());
+            planner.getPlannerData(data);
+            if (const auto written = SmoothingStep::reportOf(data.properties))
+                report = *written;
         }
         else
         {
@@ -240,8 +228,9 @@ namespace
         const std::size_t teamKept = (report.teamReplanKept ? 1 : 0) + (report.teamSolveKept ? 1 : 0);
         std::ostringstream solve;
         if (report.teamSolveTried)
-            solve << "whole-team solve " << (report.teamSolveKept ? "kept" : report.teamSolved ? "not kept" : "failed")
-                  << " (" << report.teamSolveSeconds << " s), ";
+            solve << "whole-team solve "
+                  << (report.teamSolveKept ? "kept" : report.teamSolved ? "not kept" : "not solved") << " ("
+                  << report.teamSolveSeconds << " s), ";
         const char *team =
             report.teamReplanned ? (report.teamReplanKept ? "team replanned, " : "team replan not kept, ") : "";
         std::cout << "smoothing  " << report.seconds << " s (--smooth " << budget << "): " << solve.str() << team

@@ -75,12 +75,12 @@ TEST(LatticeMapfSolver, SameSeedSamePatchAndAWindowKeepsToItsEnds)
 TEST(LatticeMapfSolver, DeclinesArmsAndLatticesTooLarge)
 {
     const auto arms = scenarios::generateFamilyInstance("planar_cell", 4, 0);
-    EXPECT_FALSE(LatticeMapfSolver::applies(*arms.getSpaceInformation(), {0, 1, 2, 3}));
+    EXPECT_FALSE(LatticeMapfSolver().appliesTo(*arms.getSpaceInformation(), {0, 1, 2, 3}));
     Patch patch;
     EXPECT_FALSE(LatticeMapfSolver().solve(*arms.getSpaceInformation(), wholeProblem(arms),
                                            ob::timedPlannerTerminationCondition(60.), 1, patch));
     const auto discs = scenarios::generateFamilyInstance("crossing", 8, 0);
-    EXPECT_TRUE(LatticeMapfSolver::applies(*discs.getSpaceInformation(), {0, 1}));
+    EXPECT_TRUE(LatticeMapfSolver().appliesTo(*discs.getSpaceInformation(), {0, 1}));
     EXPECT_FALSE(LatticeMapfSolver(10).solve(*discs.getSpaceInformation(), wholeProblem(discs),
                                              ob::timedPlannerTerminationCondition(60.), 1, patch));
 }

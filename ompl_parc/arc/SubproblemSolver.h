@@ -26,6 +26,15 @@ namespace ompl_parc
         /** \brief A short name for statistics ("pp-st-rrt", "composite-rrtc"). */
         virtual std::string getName() const = 0;
 
+        /** \brief Whether the solver can plan for the robots \e robots of \e si at all (a lattice only for robots that
+            translate): where it cannot, solve() declines at once, and a caller with a choice (PlanSmoother's team
+            solve) need not try it. */
+        virtual bool appliesTo(const MultiRobotSpaceInformation & /*si*/,
+                               const std::vector<std::size_t> & /*robots*/) const
+        {
+            return true;
+        }
+
         /** \brief Whether solve() avoids the subproblem's context (Subproblem::others), which is then worth
             filling. */
         virtual bool usesContext() const { return false; }

@@ -57,7 +57,9 @@ ompl_parc::SmoothingReport ompl_parc::PlanSmoother::smooth(MultiRobotPlan &plan,
     {
         const auto budget =
             ob::plannerOrTerminationCondition(ptc, ob::timedPlannerTerminationCondition(teamReplanTime_));
-        if (teamSolver_)
+        std::vector<std::size_t> everyone(n);
+        std::iota(everyone.begin(), everyone.end(), 0);
+        if (teamSolver_ && teamSolver_->appliesTo(*si_, everyone))
         {
             const auto solveStarted = ompl::time::now();
             report.teamSolveTried = true;

@@ -97,7 +97,8 @@ namespace ompl_parc
             planning needs seconds among dense teams), under half the team replan's time (setTeamReplanTime()); keep its
             plan as a team replan's, if better by the objective and conflict-free. The team replan then has to beat it.
             A repair's patch holds the robots of its window together for as long as the slowest needs; a plan made
-            for the whole team at once has no such chain of waits. Null (the default): none. */
+            for the whole team at once has no such chain of waits. Not tried where the solver does not apply to the
+            team (SubproblemSolver::appliesTo(): a lattice on arms). Null (the default): none. */
         void setTeamSolver(SubproblemSolverPtr solver) { teamSolver_ = std::move(solver); }
 
         /** \brief Let the team replan go on from where the last smooth() with \e memory (the replanner's

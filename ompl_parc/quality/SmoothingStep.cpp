@@ -6,6 +6,7 @@
 #include <ompl/util/Console.h>
 #include <ompl/util/Exception.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -77,4 +78,33 @@ void ompl_parc::SmoothingStep::addProperties(const MultiRobotSpaceInformation &s
         p["makespan_unsmoothed INTEGER"] = std::to_string(smoothing->makespanBefore);
         p["sum_of_costs_unsmoothed INTEGER"] = std::to_string(smoothing->sumOfCostsBefore);
     }
+}
+
+std::optional<ompl_parc::SmoothingReport> ompl_parc::SmoothingStep::reportOf(
+    const std::map<std::string, std::string> &properties)
+{
+    const auto text = [&](const std::string &name)
+    {
+        const auto found = properties.find(name);
+        return found == properties.end() ? std::string() : found->second;
+    };
+    if (text("smoothing_time REAL").empty())
+        return std::nullopt;
+    const auto count = [&](const std::string &name)
+    { return static_cast<std::size_t>(std::stoull("0" + text(name))); };
+    SmoothingReport report;
+    report.seconds = std::stod(text("smoothing_time REAL"));
+    report.makespanBefore = count("makespan_unsmoothed INTEGER");
+    report.sumOfCostsBefore = count("sum_of_costs_unsmoothed INTEGER");
+    report.attempts = count("smoothing_attempts INTEGER");
+    const std::string team = text("smoothing_team_replan STRING"), solve = text("smoothing_team_solve STRING");
+    report.teamReplanned = team == "kept" || team == "not kept";
+    report.teamReplanKept = team == "kept";
+    report.teamSolveTried = solve == "kept" || solve == "not kept" || solve == "not solved";
+    report.teamSolved = solve == "kept" || solve == "not kept";
+    report.teamSolveKept = solve == "kept";
+    report.teamSolveSeconds = std::stod("0" + text("smoothing_team_solve_time REAL"));
+    const std::size_t teamKept = (report.teamReplanKept ? 1 : 0) + (report.teamSolveKept ? 1 : 0);
+    report.shortcuts = count("smoothing_shortcuts INTEGER") - std::min(teamKept, count("smoothing_shortcuts INTEGER"));
+    return report;
 }

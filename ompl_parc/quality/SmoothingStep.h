@@ -10,7 +10,9 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
+#include <string>
 
 namespace ompl_parc
 {
@@ -59,6 +61,11 @@ namespace ompl_parc
             makespan and sum of costs. Nothing for an empty plan. */
         static void addProperties(const MultiRobotSpaceInformation &si, const MultiRobotPlan &plan,
                                   const std::optional<SmoothingReport> &smoothing, ompl::base::PlannerData &data);
+
+        /** \brief The smoothing report that addProperties() wrote into \e properties, as far as they tell it (every
+            change kept counted as a shortcut, the team replan and solve apart); none if they hold no smoothing. What
+            a tool that only has the planner's properties (ARC's, P-ARC's, OR-P-ARC's winner's) reports. */
+        static std::optional<SmoothingReport> reportOf(const std::map<std::string, std::string> &properties);
 
       private:
         double budget_{0.}, teamReplanShare_{0.};

@@ -335,7 +335,8 @@ ompl_parc::SubproblemSolverPtr ompl_parc::LatticeMapfSolver::makeTeamSolver()
     return std::make_shared<LatticeMapfSolver>(std::size_t(1) << 18, 0.1);
 }
 
-bool ompl_parc::LatticeMapfSolver::applies(const MultiRobotSpaceInformation &si, const std::vector<std::size_t> &robots)
+bool ompl_parc::LatticeMapfSolver::appliesTo(const MultiRobotSpaceInformation &si,
+                                             const std::vector<std::size_t> &robots) const
 {
     for (std::size_t r : robots)
         if (!LatticeSearch::applies(*si.getRobot(r)) ||
@@ -348,7 +349,7 @@ bool ompl_parc::LatticeMapfSolver::solve(const MultiRobotSpaceInformation &si, c
                                          const ob::PlannerTerminationCondition &ptc, std::uint_fast32_t seed,
                                          Patch &patch) const
 {
-    if (!subproblem.check(si).empty() || !applies(si, subproblem.robots))
+    if (!subproblem.check(si).empty() || !appliesTo(si, subproblem.robots))
         return false;
     const std::size_t n = subproblem.robots.size();
     const unsigned int dim = si.getRobot(subproblem.robots.front())->getDimension();

@@ -50,7 +50,7 @@ namespace ompl_parc
         static SubproblemSolverPtr makeTeamSolver();
 
         /** \brief Whether the solver applies to the robots \e robots of \e si (see the class description). */
-        static bool applies(const MultiRobotSpaceInformation &si, const std::vector<std::size_t> &robots);
+        bool appliesTo(const MultiRobotSpaceInformation &si, const std::vector<std::size_t> &robots) const override;
 
       private:
         std::size_t maxPoints_;
