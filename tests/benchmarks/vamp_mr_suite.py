@@ -27,6 +27,13 @@ panda_two_rod and panda_four): on panda_four 7 of the 12 poses put a hand or fin
 2.2 cm; without the hand and finger spheres all 12 are free), on panda_two_rod `mirror` puts a rod into the other
 arm's finger (1.2 cm). Those pairs are not in the suite.
 
+panda_four_bins with the spheres is a knife edge: each base stands 0.14 m from the outer faces of two bin walls, and
+the spheres of panda_link1 and panda_link2 that only joint 1 moves (radius 0.06 m, 0.08 m off its axis) touch those
+walls exactly (clearance 0.0000 m) at four joint-1 angles per robot. This checker's safety margins (1e-6 and the
+single-precision inflation, about 2e-5 m) make each such angle a thin wall joint 1 cannot cross, so only the pairs
+where no robot's joint 1 has to pass one are solvable: 14 of the 132 (e.g. up -> blue), the others time out for
+every planner. The capsule Panda's links keep clear of the walls (its problems are other poses: see poses.csv).
+
 Writing the problems (needs a VAMP-MR checkout or its git directory, VAMP's spherized Panda URDF, and the demo to
 check every pose; a few seconds):
 
