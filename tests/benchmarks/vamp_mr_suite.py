@@ -32,7 +32,8 @@ the spheres of panda_link1 and panda_link2 that only joint 1 moves (radius 0.06 
 walls exactly (clearance 0.0000 m) at four joint-1 angles per robot. This checker's safety margins (1e-6 and the
 single-precision inflation, about 2e-5 m) make each such angle a thin wall joint 1 cannot cross, so only the pairs
 where no robot's joint 1 has to pass one are solvable: 14 of the 132 (e.g. up -> blue), the others time out for
-every planner. The capsule Panda's links keep clear of the walls (its problems are other poses: see poses.csv).
+every planner. The capsule Panda's link 1 lies on joint 1's axis and has no such angles (ARC solved its 12
+four_bins instances); its fatter links rule out other poses instead (poses.csv).
 
 Writing the problems (needs a VAMP-MR checkout or its git directory, VAMP's spherized Panda URDF, and the demo to
 check every pose; a few seconds):
