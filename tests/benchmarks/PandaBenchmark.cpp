@@ -6,6 +6,13 @@
    all 4096 pairs (the bodies do not fit this machine's caches), "/256" through the first 256 (they do, as the
    few bodies of one timestep of the scan do).
 
+   PandaModel/<model>/Pair and /Alone: the cost per check of a Panda model as the planners use it, forward kinematics
+   included: a pair of facing arms (bodiesCollide) and one arm's own validity (self-collision, a table:
+   Robot::allValid over the 8 configurations of a motion's rake). <model> is Capsules, our built-in Panda, and, where
+   the environment variable OMPL_PARC_SPHERE_PANDA names a Panda URDF of spheres (VAMP's
+   resources/panda/panda_spherized.urdf: 59 spheres, the model VAMP and VAMP-MR plan with), Spheres, on the same
+   configurations: what a user who brings such a model pays per check.
+
    PandaRRTConnect: one Panda alone in the cage, start and goal of Panda Cage 8 task 0, planned as ARC's first
    stage does (InitialPlanner: RRT-Connect, then optionally OMPL's simplifier with the authors' bounded effort);
    iteration i plans robot i mod 8 with seed i + 1; median_ms is the median over the iterations. */
@@ -19,6 +26,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <random>
 
 using namespace ompl_parc;
@@ -138,6 +146,73 @@ namespace
         state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
     }
     BENCHMARK(BM_PandaPairFclPlaced)->Name("PandaPair/FCL/Placed")->Arg(SAMPLES)->Arg(256);
+
+    /** The Panda of \e urdf (our built-in one if empty) at \e base, beside a table. */
+    std::shared_ptr<UrdfArm> pandaModel(const std::string &urdf, const Eigen::Isometry3d &base)
+    {
+        auto table = std::make_shared<Environment>();
+        Obstacle top;
+        top.name = "table";
+        top.size = Eigen::Vector3d(1.2, 1.2, 0.1);
+        top.pose = Eigen::Translation3d(0.6, 0., -0.15);
+        table->addObstacle(top);
+        return std::make_shared<UrdfArm>("panda", table, urdf.empty() ? models::pandaUrdf() : UrdfArm::readFile(urdf),
+                                         "panda_link0", "panda_hand", base);
+    }
+
+    void BM_PandaModelPair(benchmark::State &state, const std::string &urdf)
+    {
+        const auto &set = pairs();
+        const auto a = pandaModel(urdf, Eigen::Isometry3d::Identity());
+        const auto b = pandaModel(urdf, UrdfArm::pose(0.6, 0., 1.2, M_PI, 0., M_PI));
+        CollisionBody ba, bb;
+        std::size_t k = 0, hits = 0;
+        for (auto _ : state)
+        {
+            a->computeBody(set.qa[k].data(), ba);
+            b->computeBody(set.qb[k].data(), bb);
+            hits += bodiesCollide(ba, bb) ? 1 : 0;
+            k = (k + 1) % SAMPLES;
+        }
+        state.counters["capsules"] = static_cast<double>(ba.size());
+        state.counters["colliding_fraction"] = static_cast<double>(hits) / static_cast<double>(state.iterations());
+        state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
+    }
+
+    void BM_PandaModelAlone(benchmark::State &state, const std::string &urdf)
+    {
+        const auto &set = pairs();
+        const auto arm = pandaModel(urdf, Eigen::Isometry3d::Identity());
+        // A motion's rake: 8 configurations a small step apart around each sample.
+        constexpr std::size_t RAKE = 8;
+        std::vector<double> rakes(SAMPLES * RAKE * 7);
+        for (std::size_t k = 0; k < SAMPLES; ++k)
+            for (std::size_t s = 0; s < RAKE; ++s)
+                for (std::size_t d = 0; d < 7; ++d)
+                    rakes[(k * RAKE + s) * 7 + d] = set.qa[k][d] + 0.01 * static_cast<double>(s);
+        std::size_t k = 0, valid = 0;
+        for (auto _ : state)
+        {
+            valid += arm->allValid(rakes.data() + k * RAKE * 7, RAKE) ? 1 : 0;
+            k = (k + 1) % SAMPLES;
+        }
+        state.counters["valid_fraction"] = static_cast<double>(valid) / static_cast<double>(state.iterations());
+        state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * RAKE));
+    }
+
+    /** The Capsules cases, and the Spheres ones where OMPL_PARC_SPHERE_PANDA names a URDF. */
+    const bool registeredModels = []
+    {
+        std::vector<std::pair<std::string, std::string>> models{{"Capsules", ""}};
+        if (const char *spheres = std::getenv("OMPL_PARC_SPHERE_PANDA"); spheres != nullptr && *spheres != '\0')
+            models.emplace_back("Spheres", spheres);
+        for (const auto &[name, urdf] : models)
+        {
+            benchmark::RegisterBenchmark(("PandaModel/" + name + "/Pair").c_str(), BM_PandaModelPair, urdf);
+            benchmark::RegisterBenchmark(("PandaModel/" + name + "/Alone").c_str(), BM_PandaModelAlone, urdf);
+        }
+        return true;
+    }();
 
     void BM_PandaRRTConnect(benchmark::State &state, bool simplify)
     {
