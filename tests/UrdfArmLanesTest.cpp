@@ -2,9 +2,10 @@
    double-precision check (Robot::checkValidity, itself checked against FCL in EnvironmentCheckTest): it never
    calls a configuration valid that the double check rejects, also a hair inside a collision, where rounding
    matters most; it rarely rejects more (its inflation); batches answer like single configurations; and the
-   robot's batched motion validator never accepts a motion OMPL's DiscreteMotionValidator rejects. Three worlds:
-   the Panda cage, a Panda far from the origin (larger coordinates, larger rounding) among random obstacles, and an
-   arm with prismatic joints and a mimic finger off the chain among random obstacles. */
+   robot's batched motion validator never accepts a motion OMPL's DiscreteMotionValidator rejects. Four worlds:
+   the Panda cage, a Panda far from the origin (larger coordinates, larger rounding) among random obstacles, an
+   arm with prismatic joints and a mimic finger off the chain among random obstacles, and an arm of spheres among
+   random obstacles. */
 #include "TestProblems.h"
 
 #include "ompl_parc/robots/BuiltinModels.h"
@@ -84,6 +85,35 @@ namespace
                                          UrdfArm::pose(base.x(), base.y(), base.z(), 0.2, 0., -0.7));
     }
 
+    /** A six-joint arm whose links are covered by spheres, as VAMP and cuRobo model arms: each link 0.3 m long
+        with six spheres along it and two beside it, so several spheres per frame (the kernel's per-frame spheres
+        skip most sphere pairs), based at (3, 2, 0.5) among obstacles around it. */
+    std::shared_ptr<const Robot> sphereArm()
+    {
+        std::string urdf = R"(<robot name="spheres"><link name="link0"><collision><geometry><sphere radius="0.08"/>)"
+                           R"(</geometry></collision></link>)";
+        for (int k = 1; k <= 6; ++k)
+        {
+            urdf += "<link name=\"link" + std::to_string(k) + "\">";
+            for (int s = 0; s < 8; ++s)
+            {
+                const double z = s < 6 ? 0.05 * s : 0.15, x = s == 6 ? 0.05 : (s == 7 ? -0.05 : 0.);
+                urdf += "<collision><origin xyz=\"" + std::to_string(x) + " 0 " + std::to_string(z) +
+                        "\"/><geometry><sphere radius=\"" + std::to_string(0.035 - 0.002 * k) +
+                        "\"/></geometry></collision>";
+            }
+            urdf += "</link><joint name=\"joint" + std::to_string(k) + "\" type=\"revolute\"><parent link=\"link" +
+                    std::to_string(k - 1) + "\"/><child link=\"link" + std::to_string(k) + "\"/><origin xyz=\"0 0 " +
+                    (k == 1 ? "0.1" : "0.3") + "\"/><axis xyz=\"" + (k % 2 == 1 ? "0 0 1" : "0 1 0") +
+                    "\"/><limit lower=\"-2.9\" upper=\"2.9\" effort=\"1\" velocity=\"1\"/></joint>";
+        }
+        urdf += "</robot>";
+        const Eigen::Vector3d base(3., 2., 0.5);
+        return std::make_shared<UrdfArm>("spheres", obstaclesAround(base + Eigen::Vector3d(0., 0., 0.6), 1.),
+                                         urdf, "link0", "link6", UrdfArm::pose(base.x(), base.y(), base.z(), 0., 0.,
+                                                                                0.4));
+    }
+
     /** Random configurations: no collision of the double check missed, few extra rejections. */
     void expectConservative(const Robot &robot, const std::string &label)
     {
@@ -147,6 +177,12 @@ TEST(UrdfArmLanes, PrismaticAndMimicJointsNeverMissACollisionOfTheDoubleCheck)
 {
     expectConservative(*gripperArm(), "gripper_arm");
     expectBoundaryRejected(*gripperArm(), "gripper_arm");
+}
+
+TEST(UrdfArmLanes, ArmOfSpheresNeverMissesACollisionOfTheDoubleCheck)
+{
+    expectConservative(*sphereArm(), "sphere_arm");
+    expectBoundaryRejected(*sphereArm(), "sphere_arm");
 }
 
 TEST(UrdfArmLanes, BatchesAnswerLikeTheirConfigurationsOneByOne)

@@ -12,11 +12,12 @@ namespace
     using Batch = xsimd::batch<float>;
     constexpr std::size_t WIDTH = Batch::size;
 
-    /** Per-thread buffers of one call: frames (9 rotation + 3 translation batches each), capsule end points
-        (6 batches each) and capsule sphere centres (3 each). Sized once per thread and arm size. */
+    /** Per-thread buffers of one call: frames (9 rotation + 3 translation batches each, and the centre of the
+        frame's sphere: 3), capsule end points (6 batches each) and capsule sphere centres (3 each). Sized once per
+        thread and arm size. */
     struct Scratch
     {
-        std::vector<Batch> rotations, translations, ends, centers;
+        std::vector<Batch> rotations, translations, ends, centers, frameCenters;
         ompl_parc::CollisionBody capsule;  // one lane's capsule, in double, for the exact narrow phase
     };
 
@@ -68,6 +69,53 @@ ompl_parc::UrdfArmLanes::UrdfArmLanes(const Eigen::Isometry3d &basePose, unsigne
         selfRadius_.push_back(static_cast<float>(c.radius + selfInflation_));
         sphereRadius_.push_back(static_cast<float>(0.5 * (c.b - c.a).norm() + c.radius + 2. * selfInflation_));
         radius_.push_back(static_cast<float>(c.radius + inflation_));
+    }
+
+    // Per frame a sphere around its capsules' spheres (the centre of their end points' box), grown by the rounding of
+    // its own centre's kinematics (as a capsule's sphere is grown by its own).
+    const std::size_t frames = joints_.size() + 1;
+    frameCenter_.assign(3 * frames, 0.f);
+    frameRadius_.assign(frames, 0.f);
+    frameObstacleRadius_.assign(frames, 0.f);
+    frameBegin_.assign(frames + 1, 0);
+    for (std::size_t f = 0; f < frames; ++f)
+    {
+        Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
+        for (const Capsule &c : capsules)
+            if (c.frame == f)
+            {
+                lo = lo.cwiseMin(c.a.cwiseMin(c.b));
+                hi = hi.cwiseMax(c.a.cwiseMax(c.b));
+            }
+        if (!(lo.x() <= hi.x()))
+            continue;
+        const Eigen::Vector3d centre = 0.5 * (lo + hi);
+        double radius = 0.;
+        for (const Capsule &c : capsules)
+            if (c.frame == f)
+                radius = std::max(radius, (0.5 * (c.a + c.b) - centre).norm() + 0.5 * (c.b - c.a).norm() + c.radius);
+        for (int r = 0; r < 3; ++r)
+            frameCenter_[3 * f + r] = static_cast<float>(centre[r]);
+        frameRadius_[f] = static_cast<float>(radius + 4. * selfInflation_);
+        frameObstacleRadius_[f] = static_cast<float>(radius + 3. * inflation_);
+    }
+    for (std::size_t f = 0; f < frames; ++f)
+    {
+        for (std::size_t i = 0; i < capsules.size(); ++i)
+            if (capsules[i].frame == f)
+                byFrame_.push_back(i);
+        frameBegin_[f + 1] = byFrame_.size();
+    }
+    std::stable_sort(
+        selfPairs_.begin(), selfPairs_.end(),
+        [this](const std::pair<std::size_t, std::size_t> &x, const std::pair<std::size_t, std::size_t> &y)
+        { return std::minmax(frame_[x.first], frame_[x.second]) < std::minmax(frame_[y.first], frame_[y.second]); });
+    for (std::size_t p = 0; p < selfPairs_.size(); ++p)
+    {
+        const auto [a, b] = std::minmax(frame_[selfPairs_[p].first], frame_[selfPairs_[p].second]);
+        if (framePairs_.empty() || framePairs_.back().a != a || framePairs_.back().b != b)
+            framePairs_.push_back({a, b, p, p});
+        framePairs_.back().end = p + 1;
     }
 }
 
@@ -143,19 +191,33 @@ bool ompl_parc::UrdfArmLanes::anyCollides(const double *configs, std::size_t cou
             s.centers[3 * i + c] = Batch(0.5f) * (end[c] + end[3 + c]);
     }
 
-    // Self-collision: a sphere clearance per pair, the exact segment distance only where some lane is close.
-    for (const auto &[i, j] : selfPairs_)
+    // Self-collision: per pair of frames their spheres' clearance, then per pair of capsules theirs, the exact segment
+    // distance only where some lane is close.
+    s.frameCenters.resize(3 * frames);
+    for (std::size_t f = 0; f < frames; ++f)
+        if (frameRadius_[f] > 0.f)
+            rotate(&s.rotations[9 * f], &frameCenter_[3 * f], &s.translations[3 * f], &s.frameCenters[3 * f]);
+    for (const FramePairs &group : framePairs_)
     {
-        const Batch *ci = &s.centers[3 * i], *cj = &s.centers[3 * j];
-        const Batch dx = ci[0] - cj[0], dy = ci[1] - cj[1], dz = ci[2] - cj[2];
-        const float reach = sphereRadius_[i] + sphereRadius_[j], touch = selfRadius_[i] + selfRadius_[j];
+        const Batch *ca = &s.frameCenters[3 * group.a], *cb = &s.frameCenters[3 * group.b];
+        const Batch dx = ca[0] - cb[0], dy = ca[1] - cb[1], dz = ca[2] - cb[2];
+        const float reach = frameRadius_[group.a] + frameRadius_[group.b];
         if (xsimd::none(dx * dx + dy * dy + dz * dz < Batch(reach * reach)))
             continue;
-        const Batch *a = &s.ends[6 * i], *b = &s.ends[6 * j];
-        const Batch d2 = segmentSegmentDistanceSquared(a[0], a[1], a[2], a[3], a[4], a[5], b[0], b[1], b[2], b[3],
-                                                       b[4], b[5]);
-        if (xsimd::any(d2 < Batch(touch * touch)))
-            return true;
+        for (std::size_t p = group.begin; p < group.end; ++p)
+        {
+            const auto [i, j] = selfPairs_[p];
+            const Batch *ci = &s.centers[3 * i], *cj = &s.centers[3 * j];
+            const Batch ex = ci[0] - cj[0], ey = ci[1] - cj[1], ez = ci[2] - cj[2];
+            const float near = sphereRadius_[i] + sphereRadius_[j], touch = selfRadius_[i] + selfRadius_[j];
+            if (xsimd::none(ex * ex + ey * ey + ez * ez < Batch(near * near)))
+                continue;
+            const Batch *a = &s.ends[6 * i], *b = &s.ends[6 * j];
+            const Batch d2 =
+                segmentSegmentDistanceSquared(a[0], a[1], a[2], a[3], a[4], a[5], b[0], b[1], b[2], b[3], b[4], b[5]);
+            if (xsimd::any(d2 < Batch(touch * touch)))
+                return true;
+        }
     }
 
     // Environment, in the world frame: each capsule's box against each obstacle's box, then the exact test per
@@ -165,17 +227,21 @@ bool ompl_parc::UrdfArmLanes::anyCollides(const double *configs, std::size_t cou
         rotation[e] = Batch(baseRotation_[e]);
     for (int e = 0; e < 3; ++e)
         translation[e] = Batch(baseTranslation_[e]);
+    const auto toWorld = [&](Batch *point)
+    {
+        const Batch local[3] = {point[0], point[1], point[2]};
+        for (int row = 0; row < 3; ++row)
+            point[row] = translation[row] + rotation[3 * row] * local[0] + rotation[3 * row + 1] * local[1] +
+                         rotation[3 * row + 2] * local[2];
+    };
     for (std::size_t i = 0; i < capsules; ++i)
     {
-        Batch *end = &s.ends[6 * i];
-        for (int side = 0; side < 2; ++side)
-        {
-            Batch local[3] = {end[3 * side], end[3 * side + 1], end[3 * side + 2]};
-            for (int row = 0; row < 3; ++row)
-                end[3 * side + row] = translation[row] + rotation[3 * row] * local[0] +
-                                      rotation[3 * row + 1] * local[1] + rotation[3 * row + 2] * local[2];
-        }
+        toWorld(&s.ends[6 * i]);
+        toWorld(&s.ends[6 * i + 3]);
     }
+    for (std::size_t f = 0; f < frames; ++f)
+        if (frameRadius_[f] > 0.f)
+            toWorld(&s.frameCenters[3 * f]);
     s.capsule.resize(1, false);
     for (std::size_t k = 0; k < obstacles.size(); ++k)
     {
@@ -187,35 +253,49 @@ bool ompl_parc::UrdfArmLanes::anyCollides(const double *configs, std::size_t cou
             boxLo[c] = Batch(static_cast<float>(lo[c] - inflation_));
             boxHi[c] = Batch(static_cast<float>(hi[c] + inflation_));
         }
-        for (std::size_t i = 0; i < capsules; ++i)
+        for (std::size_t f = 0; f < frames; ++f)
         {
-            const Batch *end = &s.ends[6 * i];
-            const Batch r(radius_[i]);
-            auto overlap = (xsimd::min(end[0], end[3]) - r <= boxHi[0]) & (xsimd::max(end[0], end[3]) + r >= boxLo[0]);
-            for (int c = 1; c < 3; ++c)
-                overlap = overlap & (xsimd::min(end[c], end[3 + c]) - r <= boxHi[c]) &
-                          (xsimd::max(end[c], end[3 + c]) + r >= boxLo[c]);
-            if (xsimd::none(overlap))
+            if (frameBegin_[f] == frameBegin_[f + 1])
                 continue;
-            alignas(64) float lane[6][WIDTH];
-            for (int c = 0; c < 6; ++c)
-                end[c].store_aligned(lane[c]);
-            alignas(64) bool near[WIDTH];
-            overlap.store_aligned(near);
-            for (std::size_t l = 0; l < std::min(count, WIDTH); ++l)
+            const Batch *centre = &s.frameCenters[3 * f];
+            const Batch reach(frameObstacleRadius_[f]);
+            auto touches = (centre[0] - reach <= boxHi[0]) & (centre[0] + reach >= boxLo[0]);
+            for (int c = 1; c < 3; ++c)
+                touches = touches & (centre[c] - reach <= boxHi[c]) & (centre[c] + reach >= boxLo[c]);
+            if (xsimd::none(touches))
+                continue;
+            for (std::size_t m = frameBegin_[f]; m < frameBegin_[f + 1]; ++m)
             {
-                if (!near[l])
+                const std::size_t i = byFrame_[m];
+                const Batch *end = &s.ends[6 * i];
+                const Batch r(radius_[i]);
+                auto overlap =
+                    (xsimd::min(end[0], end[3]) - r <= boxHi[0]) & (xsimd::max(end[0], end[3]) + r >= boxLo[0]);
+                for (int c = 1; c < 3; ++c)
+                    overlap = overlap & (xsimd::min(end[c], end[3 + c]) - r <= boxHi[c]) &
+                              (xsimd::max(end[c], end[3 + c]) + r >= boxLo[c]);
+                if (xsimd::none(overlap))
                     continue;
-                CollisionBody &body = s.capsule;
-                body.ax_[0] = lane[0][l];
-                body.ay_[0] = lane[1][l];
-                body.az_[0] = lane[2][l];
-                body.bx_[0] = lane[3][l];
-                body.by_[0] = lane[4][l];
-                body.bz_[0] = lane[5][l];
-                body.radius_[0] = radius_[i];
-                if (obstacles.capsuleHits(body, 0, k))
-                    return true;
+                alignas(64) float lane[6][WIDTH];
+                for (int c = 0; c < 6; ++c)
+                    end[c].store_aligned(lane[c]);
+                alignas(64) bool near[WIDTH];
+                overlap.store_aligned(near);
+                for (std::size_t l = 0; l < std::min(count, WIDTH); ++l)
+                {
+                    if (!near[l])
+                        continue;
+                    CollisionBody &body = s.capsule;
+                    body.ax_[0] = lane[0][l];
+                    body.ay_[0] = lane[1][l];
+                    body.az_[0] = lane[2][l];
+                    body.bx_[0] = lane[3][l];
+                    body.by_[0] = lane[4][l];
+                    body.bz_[0] = lane[5][l];
+                    body.radius_[0] = radius_[i];
+                    if (obstacles.capsuleHits(body, 0, k))
+                        return true;
+                }
             }
         }
     }

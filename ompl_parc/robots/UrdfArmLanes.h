@@ -87,6 +87,21 @@ namespace ompl_parc
         std::vector<std::size_t> frame_;
         std::vector<float> localA_, localB_, radius_, selfRadius_, sphereRadius_;
         std::vector<std::pair<std::size_t, std::size_t>> selfPairs_;
+        /** \brief The self pairs grouped by their frames: a group's pairs are selfPairs_[begin, end), all between
+            capsules of frames \e a and \e b, and each frame has a sphere around all its capsules' spheres. A group
+            whose frame spheres are apart in every lane is skipped whole: a link covered by many spheres (a URDF of
+            spheres, as VAMP and cuRobo make them) costs a test per pair of links, not per pair of spheres. */
+        struct FramePairs
+        {
+            std::size_t a, b, begin, end;
+        };
+        std::vector<FramePairs> framePairs_;
+        /** \brief Per frame: the local centre (3 each) of its sphere, and its radius against the arm itself and
+            against obstacles (0: no capsule). Against an obstacle, a frame whose sphere's box misses the obstacle's
+            in every lane has its capsules skipped. */
+        std::vector<float> frameCenter_, frameRadius_, frameObstacleRadius_;
+        /** \brief The capsules by frame: those of frame f are byFrame_[frameBegin_[f], frameBegin_[f + 1]). */
+        std::vector<std::size_t> byFrame_, frameBegin_;
         double selfInflation_, inflation_;
     };
 }  // namespace ompl_parc
