@@ -399,6 +399,18 @@ def main():
     for model in args.models.split(","):
         if model not in MODELS:
             parser.error(f"unknown model '{model}' (valid: {', '.join(MODELS)})")
+    if args.every < 1 or args.jobs < 1 or not args.time_limit > 0 or args.max_poses < 0:
+        parser.error("--every and --jobs must be at least 1, --time-limit positive and --max-poses at least 0")
+    if not re.fullmatch(r"[0-9]+(-[0-9]+)?", args.seeds):
+        parser.error(f"--seeds must be N or N-M, not '{args.seeds}'")
+    if args.write_scenarios and args.vamp_urdf and not os.path.isfile(args.vamp_urdf):
+        parser.error(f"no file {args.vamp_urdf} (--vamp-urdf: VAMP's resources/panda/panda_spherized.urdf)")
+    if args.write_scenarios and args.vamp_mr and not os.path.isdir(args.vamp_mr):
+        parser.error(f"no folder {args.vamp_mr} (--vamp-mr: a VAMP-MR checkout or its git directory)")
+    if args.scenarios and not args.write_scenarios and \
+            not os.path.isfile(os.path.join(args.scenarios, "instances.csv")):
+        listed = os.path.join(args.scenarios, "instances.csv")
+        parser.error(f"no {listed}: write the problems first (--write-scenarios)")
     if not args.write_scenarios and not args.scenarios:
         parser.error("give --write-scenarios DIR (with --vamp-mr and --vamp-urdf), --scenarios DIR, or both")
     if args.write_scenarios:
