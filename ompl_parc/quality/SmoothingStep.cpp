@@ -104,7 +104,8 @@ std::optional<ompl_parc::SmoothingReport> ompl_parc::SmoothingStep::reportOf(
     report.teamSolved = solve == "kept" || solve == "not kept";
     report.teamSolveKept = solve == "kept";
     report.teamSolveSeconds = std::stod("0" + text("smoothing_team_solve_time REAL"));
-    const std::size_t teamKept = (report.teamReplanKept ? 1 : 0) + (report.teamSolveKept ? 1 : 0);
-    report.shortcuts = count("smoothing_shortcuts INTEGER") - std::min(teamKept, count("smoothing_shortcuts INTEGER"));
+    const std::size_t teamKept = (report.teamReplanKept ? 1 : 0) + (report.teamSolveKept ? 1 : 0),
+                      kept = count("smoothing_shortcuts INTEGER");
+    report.shortcuts = kept - std::min(teamKept, kept);
     return report;
 }

@@ -21,6 +21,42 @@ namespace
         ompl_parc::CollisionBody capsule;  // one lane's capsule, in double, for the exact narrow phase
     };
 
+    /** True if the capsule with end points \e end (6 batches, world frame) and radius \e radius touches obstacle \e k
+        (whose box, grown by the inflation, is \e boxLo..\e boxHi) in one of the first \e count lanes: the box test on
+        all lanes, then ObstacleSet's exact test in double precision (through \e body, one capsule) per lane that
+        overlaps. */
+    bool laneCapsuleHits(const Batch *end, float radius, const Batch *boxLo, const Batch *boxHi, std::size_t count,
+                         const ompl_parc::ObstacleSet &obstacles, std::size_t k, ompl_parc::CollisionBody &body)
+    {
+        const Batch r(radius);
+        auto overlap = (xsimd::min(end[0], end[3]) - r <= boxHi[0]) & (xsimd::max(end[0], end[3]) + r >= boxLo[0]);
+        for (int c = 1; c < 3; ++c)
+            overlap = overlap & (xsimd::min(end[c], end[3 + c]) - r <= boxHi[c]) &
+                      (xsimd::max(end[c], end[3 + c]) + r >= boxLo[c]);
+        if (xsimd::none(overlap))
+            return false;
+        alignas(64) float lane[6][WIDTH];
+        for (int c = 0; c < 6; ++c)
+            end[c].store_aligned(lane[c]);
+        alignas(64) bool near[WIDTH];
+        overlap.store_aligned(near);
+        for (std::size_t l = 0; l < std::min(count, WIDTH); ++l)
+        {
+            if (!near[l])
+                continue;
+            body.ax_[0] = lane[0][l];
+            body.ay_[0] = lane[1][l];
+            body.az_[0] = lane[2][l];
+            body.bx_[0] = lane[3][l];
+            body.by_[0] = lane[4][l];
+            body.bz_[0] = lane[5][l];
+            body.radius_[0] = radius;
+            if (obstacles.capsuleHits(body, 0, k))
+                return true;
+        }
+        return false;
+    }
+
     /** row-major 3x3 times vector, for a batch matrix and a constant vector. */
     inline void rotate(const Batch *r, const float *v, const Batch *t, Batch *out)
     {
@@ -81,30 +117,27 @@ ompl_parc::UrdfArmLanes::UrdfArmLanes(const Eigen::Isometry3d &basePose, unsigne
     for (std::size_t f = 0; f < frames; ++f)
     {
         Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
-        for (const Capsule &c : capsules)
-            if (c.frame == f)
+        for (std::size_t i = 0; i < capsules.size(); ++i)
+            if (capsules[i].frame == f)
             {
-                lo = lo.cwiseMin(c.a.cwiseMin(c.b));
-                hi = hi.cwiseMax(c.a.cwiseMax(c.b));
+                byFrame_.push_back(i);
+                lo = lo.cwiseMin(capsules[i].a.cwiseMin(capsules[i].b));
+                hi = hi.cwiseMax(capsules[i].a.cwiseMax(capsules[i].b));
             }
-        if (!(lo.x() <= hi.x()))
+        frameBegin_[f + 1] = byFrame_.size();
+        if (!hasCapsules(f))
             continue;
         const Eigen::Vector3d centre = 0.5 * (lo + hi);
         double radius = 0.;
-        for (const Capsule &c : capsules)
-            if (c.frame == f)
-                radius = std::max(radius, (0.5 * (c.a + c.b) - centre).norm() + 0.5 * (c.b - c.a).norm() + c.radius);
+        for (std::size_t m = frameBegin_[f]; m < frameBegin_[f + 1]; ++m)
+        {
+            const Capsule &c = capsules[byFrame_[m]];
+            radius = std::max(radius, (0.5 * (c.a + c.b) - centre).norm() + 0.5 * (c.b - c.a).norm() + c.radius);
+        }
         for (int r = 0; r < 3; ++r)
             frameCenter_[3 * f + r] = static_cast<float>(centre[r]);
         frameRadius_[f] = static_cast<float>(radius + 4. * selfInflation_);
         frameObstacleRadius_[f] = static_cast<float>(radius + 3. * inflation_);
-    }
-    for (std::size_t f = 0; f < frames; ++f)
-    {
-        for (std::size_t i = 0; i < capsules.size(); ++i)
-            if (capsules[i].frame == f)
-                byFrame_.push_back(i);
-        frameBegin_[f + 1] = byFrame_.size();
     }
     std::stable_sort(
         selfPairs_.begin(), selfPairs_.end(),
@@ -195,7 +228,7 @@ bool ompl_parc::UrdfArmLanes::anyCollides(const double *configs, std::size_t cou
     // distance only where some lane is close.
     s.frameCenters.resize(3 * frames);
     for (std::size_t f = 0; f < frames; ++f)
-        if (frameRadius_[f] > 0.f)
+        if (hasCapsules(f))
             rotate(&s.rotations[9 * f], &frameCenter_[3 * f], &s.translations[3 * f], &s.frameCenters[3 * f]);
     for (const FramePairs &group : framePairs_)
     {
@@ -240,7 +273,7 @@ bool ompl_parc::UrdfArmLanes::anyCollides(const double *configs, std::size_t cou
         toWorld(&s.ends[6 * i + 3]);
     }
     for (std::size_t f = 0; f < frames; ++f)
-        if (frameRadius_[f] > 0.f)
+        if (hasCapsules(f))
             toWorld(&s.frameCenters[3 * f]);
     s.capsule.resize(1, false);
     for (std::size_t k = 0; k < obstacles.size(); ++k)
@@ -255,7 +288,7 @@ bool ompl_parc::UrdfArmLanes::anyCollides(const double *configs, std::size_t cou
         }
         for (std::size_t f = 0; f < frames; ++f)
         {
-            if (frameBegin_[f] == frameBegin_[f + 1])
+            if (!hasCapsules(f))
                 continue;
             const Batch *centre = &s.frameCenters[3 * f];
             const Batch reach(frameObstacleRadius_[f]);
@@ -265,38 +298,9 @@ bool ompl_parc::UrdfArmLanes::anyCollides(const double *configs, std::size_t cou
             if (xsimd::none(touches))
                 continue;
             for (std::size_t m = frameBegin_[f]; m < frameBegin_[f + 1]; ++m)
-            {
-                const std::size_t i = byFrame_[m];
-                const Batch *end = &s.ends[6 * i];
-                const Batch r(radius_[i]);
-                auto overlap =
-                    (xsimd::min(end[0], end[3]) - r <= boxHi[0]) & (xsimd::max(end[0], end[3]) + r >= boxLo[0]);
-                for (int c = 1; c < 3; ++c)
-                    overlap = overlap & (xsimd::min(end[c], end[3 + c]) - r <= boxHi[c]) &
-                              (xsimd::max(end[c], end[3 + c]) + r >= boxLo[c]);
-                if (xsimd::none(overlap))
-                    continue;
-                alignas(64) float lane[6][WIDTH];
-                for (int c = 0; c < 6; ++c)
-                    end[c].store_aligned(lane[c]);
-                alignas(64) bool near[WIDTH];
-                overlap.store_aligned(near);
-                for (std::size_t l = 0; l < std::min(count, WIDTH); ++l)
-                {
-                    if (!near[l])
-                        continue;
-                    CollisionBody &body = s.capsule;
-                    body.ax_[0] = lane[0][l];
-                    body.ay_[0] = lane[1][l];
-                    body.az_[0] = lane[2][l];
-                    body.bx_[0] = lane[3][l];
-                    body.by_[0] = lane[4][l];
-                    body.bz_[0] = lane[5][l];
-                    body.radius_[0] = radius_[i];
-                    if (obstacles.capsuleHits(body, 0, k))
-                        return true;
-                }
-            }
+                if (laneCapsuleHits(&s.ends[6 * byFrame_[m]], radius_[byFrame_[m]], boxLo, boxHi, count, obstacles, k,
+                                    s.capsule))
+                    return true;
         }
     }
     return false;

@@ -102,6 +102,7 @@ namespace ompl_parc
         std::vector<float> frameCenter_, frameRadius_, frameObstacleRadius_;
         /** \brief The capsules by frame: those of frame f are byFrame_[frameBegin_[f], frameBegin_[f + 1]). */
         std::vector<std::size_t> byFrame_, frameBegin_;
+        bool hasCapsules(std::size_t f) const { return frameBegin_[f] != frameBegin_[f + 1]; }
         double selfInflation_, inflation_;
     };
 }  // namespace ompl_parc
