@@ -8,10 +8,10 @@
 #include "ompl_parc/execution/TimeParameterization.h"
 #include "ompl_parc/io/ScenarioFile.h"
 #include "ompl_parc/io/TrajectoryFile.h"
+#include "ompl_parc/planners/ARC.h"
 #include "ompl_parc/robots/DiscRobot.h"
 #include "ompl_parc/scenarios/Scenarios.h"
 #include "ompl_parc/validation/SolutionValidator.h"
-#include "planners/ARC.h"
 
 #include <gtest/gtest.h>
 

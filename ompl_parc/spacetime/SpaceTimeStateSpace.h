@@ -3,8 +3,8 @@
 
 /** \file
     \brief The space-time state space all of ompl_parc plans in: OMPL's own from OMPL 1.6 on, ours (the same
-    API and behaviour, see statespaces/SpaceTimeStateSpace.h) before. planners/SpaceTime.h adds the matching
-    ST-RRT*. */
+    API and behaviour, see ompl_parc/statespaces/SpaceTimeStateSpace.h) before. ompl_parc/planners/SpaceTime.h adds the
+    matching ST-RRT*. */
 
 #include "ompl_parc/util/OmplCompat.h"
 

@@ -2,7 +2,7 @@
 """ompl_parc from Python: solve Mobile Cross 16 with ARC and with P-ARC at 1, 2 and 4 workers (seeds 1-3), check
 every plan with the independent validator, and plot the median planning time and makespan against the workers.
 
-Usage: demos/python/example.py [--out makespan_vs_workers.png] [--robots 16]
+Usage: python/example.py [--out makespan_vs_workers.png] [--robots 16]
 (Debian's /usr/bin/python3, for which the module is built, with python3-matplotlib; PYTHONPATH=build/python for the
 module as built)
 """

@@ -1,5 +1,5 @@
 /* The compiled part of the Python module ompl_parc (_ompl_parc): problems, planners by name, plans as NumPy arrays,
-   the independent validator, solution files, pictures and benchmarks. demos/python/package/ompl_parc/__init__.py wraps
+   the independent validator, solution files, pictures and benchmarks. python/package/ompl_parc/__init__.py wraps
    it with keyword arguments, type hints and docstrings. Bad input raises ValueError with the tools' one-line message.
  */
 #include "Solve.h"
