@@ -1,6 +1,6 @@
 /* P-ARC from user code, the way OMPL's SimpleSetup is used: a team of four discs, per-robot starts and goals by
    name, the planner by name with typed parameters, live progress, then the per-robot plan, smoothed and checked by
-   the independent validator. (The README's API example; also run by the test suite.) */
+   the independent validator. (The API example of README.md and docs/cpp.md; also run by the test suite.) */
 #include <ompl_parc/planners/setup/MultiRobotSetup.h>
 #include <ompl_parc/robots/DiscRobot.h>
 

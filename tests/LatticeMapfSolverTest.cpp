@@ -18,7 +18,7 @@ namespace ob = ompl::base;
 TEST(LatticeMapfSolver, SolvesDenseCrossingsWhole)
 {
     // 48 robots in a crossing of corridors two or three robots wide, 12 leaving and 12 entering each arm: what
-    // prioritised planning and composite RRT-Connect both fail on (README, issue 15).
+    // prioritised planning and composite RRT-Connect both fail on (docs/results.md).
     for (std::uint32_t instance = 0; instance < 5; ++instance)
     {
         const auto problem = scenarios::generateFamilyInstance("crossing", 48, instance);
@@ -88,8 +88,8 @@ TEST(LatticeMapfSolver, DeclinesArmsAndLatticesTooLarge)
 TEST(LatticeMapfSolver, ArcSolvesTheCrossingOf48Robots)
 {
     // ARC with its default solvers (composite RRT-Connect, this solver, prioritised ST-RRT): 3 of the family suite's
-    // 20 instances solved in 30 s without this solver, all 20 with it (median 1.9 s; this one 0.6 s, README); the
-    // limit is far above that.
+    // 20 instances solved in 30 s without this solver, all 20 with it (median 1.9 s; this one 0.6 s,
+    // docs/results.md); the limit is far above that.
     const auto problem = scenarios::generateFamilyInstance("crossing", 48, 2);
     ARC planner(problem.getSpaceInformation());
     planner.setSeed(1);

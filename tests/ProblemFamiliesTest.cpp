@@ -42,7 +42,7 @@ TEST(ProblemFamilies, BadRequestsAreRefused)
 TEST(ProblemFamilies, ArcSolvesAnInstanceOfEachFamily)
 {
     // One instance per family that needs repairs, solved by ARC with its default settings and re-checked by
-    // the validator (the success rates over many instances are the benchmark's business: README).
+    // the validator (the success rates over many instances are the benchmark's business: docs/results.md).
     const std::vector<std::pair<std::string, std::string>> cases = {{"rooms", "mobile"},
                                                                     {"crossing", "mobile"},
                                                                     {"ring", "mobile"},

@@ -1,5 +1,6 @@
-/* The README's C++ examples, verbatim between the markers (tests/readme_test.py checks that every cpp block of the
-   README is part of a compiled source): here they compile, run, and their plans are validated. */
+/* The C++ examples of the documentation (docs/cpp.md, docs/planners.md), verbatim between the markers
+   (tests/readme_test.py checks that every cpp block of README.md and docs/ is part of a compiled source): here they
+   compile, run, and their plans are validated. */
 #include "ompl_parc/model/MultiRobotProblem.h"
 #include "ompl_parc/planners/PARC.h"
 #include "ompl_parc/planners/PrioritizedSTRRT.h"

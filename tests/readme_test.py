@@ -1,8 +1,11 @@
 #!/usr/bin/env python3
-"""Every fenced code block of README.md compiles or runs, so that what a user copies works.
+"""Every fenced code block of README.md and of the guide's pages (docs/*.md) compiles or runs, so that what a user
+copies works; and every relative link of those pages leads to a file that exists, and to a heading of it where it
+names an anchor (GitHub's anchors: the heading in lower case, punctuation dropped, spaces as '-', '-1', '-2', ... for
+repeats).
 
-  cpp      verbatim part (indentation aside) of a source file every build compiles (demos/*.cpp, tests/*.cpp; the
-           tests run them: demos/parc_simple_setup.cpp, tests/ReadmeExamplesTest.cpp)
+  cpp      verbatim part (indentation aside) of a source file every build compiles (demos/*.cpp, tools/*.cpp,
+           tests/*.cpp; the tests run them: demos/parc_simple_setup.cpp, tests/ReadmeExamplesTest.cpp)
   cmake    verbatim part of tests/consumer/CMakeLists.txt (configured, built and run by install.consumer)
   ini      a benchmark configuration: ompl_parc_benchmark --check accepts it
   json     a scenario file the demo reads and plans on (solved or timed out, never refused), or, with
@@ -10,7 +13,7 @@
   console  "$ COMMAND" lines run; every output line shown must be printed
   sh       every command runs from a scratch folder laid out like the repository (build/bin is the tested
            build's), except: cmake/ctest builds and scripts/{setup,build,demo,test}.sh -- the set-up and test
-           commands CI itself runs from this README -- which must exist, and Google Benchmark targets, listed
+           commands CI itself runs from the README -- which must exist, and Google Benchmark targets, listed
            with --benchmark_list_tests (a full run takes minutes), and mpirun commands where ompl_parc_mpi was not
            built (sanitizer trees)
   python   run from a scratch folder by the Python the module was built for, the module on its path
@@ -30,7 +33,9 @@ import tempfile
 src, bindir = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
 benchmarks_built = sys.argv[3] == "1"
 python, pythonpath = (sys.argv[4], os.path.abspath(sys.argv[5])) if len(sys.argv) > 5 else (None, None)
-readme = open(os.path.join(src, "README.md")).read()
+# The pages checked: the README, then the guide's pages in name order.
+docs = os.path.join(src, "docs")
+pages = ["README.md"] + sorted("docs/" + f for f in os.listdir(docs) if f.endswith(".md"))
 # The README's mpirun commands: run where ompl_parc_mpi was built (not in sanitizer trees), on any core count, and as
 # root where the tests run as root (CI), which Open MPI refuses otherwise.
 mpi_built = os.path.exists(os.path.join(bindir, "ompl_parc_mpi"))
@@ -42,15 +47,17 @@ counts = {}
 
 
 def fail(block, why):
-    failures.append(f"block {block['n']} ({block['lang']}, line {block['line']}): {why}")
+    failures.append(f"{block['page']} block {block['n']} ({block['lang']}, line {block['line']}): {why}")
 
 
 def sources(*folders):
-    """The C++ sources directly in the folders: the tools and examples of demos/, the test files of tests/, all built
-    by every build (the Python binding, fuzz target and benchmarks, in subfolders, are not)."""
+    """The C++ sources directly in the folders that exist: the tools and examples of demos/ and tools/, the test files
+    of tests/, all built by every build (the Python binding, fuzz target and benchmarks, in subfolders, are not)."""
     texts = []
     for folder in folders:
         path = os.path.join(src, folder)
+        if not os.path.isdir(path):
+            continue
         texts += [open(os.path.join(path, f)).read() for f in sorted(os.listdir(path)) if f.endswith(".cpp")]
     return texts
 
@@ -73,25 +80,64 @@ scratches = []
 
 
 def scratch():
-    """A folder laid out like the repository: build/bin -> the tested binaries, scripts/ and demos/ linked, an
-    empty docs/, so that commands writing build/... or docs/... write there. Removed at the end."""
+    """A folder laid out like the repository: build/bin -> the tested binaries, scripts/, demos/, tools/ and python/
+    linked (those that exist), an empty docs/, so that commands writing build/... or docs/... write there. Removed at
+    the end."""
     root = tempfile.mkdtemp()
     scratches.append(root)
     os.makedirs(os.path.join(root, "build"))
     os.symlink(os.path.abspath(bindir), os.path.join(root, "build", "bin"))
-    for folder in ("scripts", "demos"):
-        os.symlink(os.path.join(src, folder), os.path.join(root, folder))
+    for folder in ("scripts", "demos", "tools", "python"):
+        if os.path.isdir(os.path.join(src, folder)):
+            os.symlink(os.path.join(src, folder), os.path.join(root, folder))
     os.makedirs(os.path.join(root, "docs"))
     return root
 
 
-blocks = []
-for m in re.finditer(r"^```([^\n]*)\n(.*?)^```", readme, re.M | re.S):
-    info = m.group(1).split()
-    blocks.append({"n": len(blocks) + 1, "lang": info[0] if info else "", "info": info[1:],
-                   "body": m.group(2), "line": readme.count("\n", 0, m.start()) + 1})
+FENCE = re.compile(r"^```([^\n]*)\n(.*?)^```", re.M | re.S)
 
-compiled = sources("demos", "tests")
+
+def anchors(text):
+    """The GitHub anchors of a page's headings (outside code blocks): lower case, punctuation but '-' and '_'
+    dropped, spaces as '-'; a repeated anchor gets -1, -2, ..."""
+    found, seen = set(), {}
+    for line in FENCE.sub("", text).split("\n"):
+        m = re.match(r"#{1,6} (.*)", line)
+        if not m:
+            continue
+        a = re.sub(r"[^\w\- ]", "", m.group(1).strip().lower()).replace(" ", "-")
+        found.add(a if a not in seen else f"{a}-{seen[a]}")
+        seen[a] = seen.get(a, 0) + 1
+    return found
+
+
+def check_links(page, text):
+    """Every relative link [..](target) outside code blocks and code spans leads to a file, and to a heading of a
+    Markdown page where it names an anchor."""
+    prose = re.sub(r"`[^`]*`", "", FENCE.sub(lambda m: "\n" * m.group(0).count("\n"), text))
+    for m in re.finditer(r"\]\(([^)\s]+)\)", prose):
+        target = m.group(1)
+        if re.match(r"[a-z]+:", target):
+            continue
+        line = prose.count("\n", 0, m.start()) + 1
+        path, _, anchor = target.partition("#")
+        where = os.path.normpath(os.path.join(src, os.path.dirname(page), path)) if path else os.path.join(src, page)
+        if not os.path.exists(where):
+            failures.append(f"{page} line {line}: link to {target}: no such file")
+        elif anchor and where.endswith(".md") and anchor not in anchors(open(where).read()):
+            failures.append(f"{page} line {line}: link to {target}: no such heading")
+
+
+blocks = []
+for page in pages:
+    text = open(os.path.join(src, page)).read()
+    check_links(page, text)
+    for n, m in enumerate(FENCE.finditer(text), 1):
+        info = m.group(1).split()
+        blocks.append({"page": page, "n": n, "lang": info[0] if info else "", "info": info[1:],
+                       "body": m.group(2), "line": text.count("\n", 0, m.start()) + 1})
+
+compiled = sources("demos", "tools", "tests")
 consumer = open(os.path.join(src, "tests", "consumer", "CMakeLists.txt")).read()
 SKIPPED_SCRIPTS = {"scripts/setup.sh", "scripts/build.sh", "scripts/demo.sh", "scripts/test.sh"}
 
@@ -102,7 +148,7 @@ for b in blocks:
         # Lines compared without their indentation: the README shows a function body's lines flush left.
         lines = [line.strip() for line in body.strip("\n").split("\n")]
         if not any(contains(text, lines) for text in compiled):
-            fail(b, "not a verbatim part of any compiled source in demos/ or tests/ (indentation aside)")
+            fail(b, "not a verbatim part of any compiled source in demos/, tools/ or tests/ (indentation aside)")
     elif lang == "cmake":
         if body not in consumer:
             fail(b, "not a verbatim part of tests/consumer/CMakeLists.txt")
@@ -182,7 +228,7 @@ for b in blocks:
 
 for root in scratches:
     shutil.rmtree(root, ignore_errors=True)
-print("README code blocks checked: " + ", ".join(f"{n} {lang}" for lang, n in sorted(counts.items())))
+print(f"Code blocks of {len(pages)} pages checked: " + ", ".join(f"{n} {lang}" for lang, n in sorted(counts.items())))
 for f in failures:
     print("FAIL: " + f)
 sys.exit(1 if failures else 0)

@@ -3,7 +3,7 @@
 # in headless Chromium with no network (a namespace without interfaces where the machine allows one, and no proxy),
 # and must load without a JavaScript error, draw robot-coloured pixels, and draw the robots elsewhere when the time
 # slider is moved (the page's "#t=" moves it and sends it an input event, as a drag does); each page must stay under 2 MB and load nothing from outside. Writes the Panda page's screenshot to
-# OUT_DIR/viewer_panda_cage_8.png (the README's picture).
+# OUT_DIR/viewer_panda_cage_8.png (the picture of docs/user-guide.md).
 # Usage: viewer_test.sh BIN_DIR CHROMIUM OUT_DIR
 set -u
 bin=$1 chromium=$2 out=$3
