@@ -65,7 +65,7 @@ namespace ompl_parc
         /** \brief How often windows of one size (less than ArcSettings::minWindowGrowth times as long as the first of
             them) are tried in one pass of the schedule when that factor exceeds 1: a fresh seed sometimes finds what
             the first try missed, while more tries of one size held the budgets of the Panda cells ARC failed
-            (README). A window needing more (Panda Cage 16 task 4: up to five) gets them in the later passes. */
+            (docs/results.md). A window needing more gets them in the later passes. */
         static constexpr unsigned int WINDOW_TRIES = 2;
 
         ConflictResolver(const MultiRobotSpaceInformation &si, ArcSettings settings,

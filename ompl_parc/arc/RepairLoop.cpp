@@ -308,7 +308,7 @@ ompl::geometric::PathGeometricPtr ompl_parc::RepairLoop::buildSolutionPath() con
     states.resize(times.size());
     // Each worker allocates its share of the states at once (one block: CompositeStateSpace::allocStates) and fills
     // it: placing the states and the block's first-touch page faults are most of the work at hundreds of robots
-    // (Mobile Cross 256: 764 states of 10 kB, 2 ms to allocate and 3 ms to fill on one core).
+    // (hundreds of states of kilobytes each).
     WorkerPool &pool = workspace_.getPool();
     const std::size_t w = pool.getWorkerCount(), chunk = (states.size() + w - 1) / w;
     pool.run(

@@ -15,10 +15,9 @@ namespace ompl_parc
         in play.
 
         Why apart from the loop: the planners make it in ompl::base::Planner::setup(), where OMPL planners allocate,
-        so that solve() neither starts threads nor faults in fresh pages. On Mobile Cross 256 that work took about
-        4 ms of a 60 ms P-ARC-2 solve on the 2-core VM, all of it serial (the per-pair arrays are about 1 MB of
-        fresh pages at 14 µs a page there). A later query (after clear()) reuses the workspace: a new RepairLoop
-        resets it. One RepairLoop at a time may use it. */
+        so that solve() neither starts threads nor faults in fresh pages: at hundreds of robots that serial work (the
+        per-pair arrays are megabytes of fresh pages) is a visible share of a P-ARC solve. A later query (after
+        clear()) reuses the workspace: a new RepairLoop resets it. One RepairLoop at a time may use it. */
     class RepairWorkspace
     {
       public:

@@ -21,8 +21,8 @@ namespace ompl_parc
 
         Why not a general thread pool (the Boost.Asio pool this replaced): P-ARC's stages are short (a conflict
         repair takes about a millisecond on Mobile Cross) and follow each other after microseconds of serial work.
-        Measured on a 2-core virtual machine, a pool thread that had gone to sleep between two stages started up
-        to 4 ms late, or was woken onto the caller's core, where the two shared one core for milliseconds while
+        On a 2-core virtual machine, a pool thread that had gone to sleep between two stages started milliseconds
+        late, or was woken onto the caller's core, where the two shared one core for milliseconds while
         the other idled; either way one worker did the stage's work alone. So here:
         - a worker that finishes a stage spins for the next one (yielding its core to any thread waiting for it)
           for up to SPIN_SECONDS before it sleeps on a condition variable, and the caller waits for the stage's

@@ -28,7 +28,7 @@ namespace ompl_parc
 
         The SolutionValidator's broad phase over a block of time, where the boxes are a team's bodies. A sweep along
         one axis costs O(n^2) when the boxes line up across that axis (a column of robots crossing a row: Mobile
-        Cross, whose check took 21 s at 2048 robots, 86 % of it in the sweep); the grid costs O(n log n) plus the
+        Cross at thousands of robots spent most of its check in the sweep); the grid costs O(n log n) plus the
         pairs whatever the layout. The cell is twice the boxes' median extent, so a typical box covers one to two
         cells per axis; the few boxes that would cover more than MAX_CELLS cells are tested against every box. */
     class BoxOverlaps

@@ -43,7 +43,7 @@ namespace
             hierarchy.push_back(prioritized);
         hierarchy.insert(hierarchy.end(), rrtConnect.begin(), rrtConnect.end());
         // After composite RRT-Connect: on a window it fails, MAPF's patch is found at once where prioritised
-        // planning can take the call's whole time cap (README: the order measured).
+        // planning can take the call's whole time cap (docs/results.md: the order measured).
         if (settings.latticeMapf)
             hierarchy.push_back(std::make_shared<ompl_parc::LatticeMapfSolver>());
         if (settings.solvers == ArcSettings::Solvers::COMPOSITE_FIRST)

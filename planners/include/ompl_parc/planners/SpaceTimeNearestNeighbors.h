@@ -27,9 +27,9 @@ namespace ompl_parc
         could be in.
 
         Why: ST-RRT* queries its trees once per extension, and a linear search through a distance function costs
-        a std::function call, SpaceTimeStateSpace::distance and two more virtual distances per element: 85 % of a
-        PP-ST-RRT run on a dense team (rooms, 24 robots) went there; a walk over the elements in time order with
-        the distance inline still left two thirds there (its trees reach tens of thousands of states).
+        a std::function call, SpaceTimeStateSpace::distance and two more virtual distances per element, which was
+        most of a PP-ST-RRT run on a dense team; a walk over the elements in time order with the distance inline
+        still left most of it there (its trees reach tens of thousands of states).
 
         Same answers as NearestNeighborsLinear with SpaceTimeStateSpace::distance, in the same order: the same
         distance arithmetic (the Euclidean space distance summed in coordinate order, the speed test with the

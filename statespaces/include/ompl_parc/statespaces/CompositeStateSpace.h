@@ -56,9 +56,9 @@ namespace ompl_parc
         /** \brief Allocate \e count states into \e out[0 .. count): with the single-block layout, all in one shared
             allocation, each still freed by freeState() (the allocation goes when its last state does). A solution
             path of a big team is hundreds of such states of kilobytes each; one allocation of 512 KiB or more is
-            laid on transparent huge pages (Linux, madvise), which fault in once per 2 MiB instead of once per 4 KiB: on
-            this project's VMs a 4 KiB fault costs ~12 us, and the 716 states (5.7 MB) of Mobile Cross 256's path
-            took 22 ms to build one by one, 1/6 of ARC's solve. Other layouts: one allocState() per state. */
+            laid on transparent huge pages (Linux, madvise), which fault in once per 2 MiB instead of once per 4 KiB:
+            built one by one, the megabytes of a large team's path cost a visible share of ARC's solve in page faults
+            alone. Other layouts: one allocState() per state. */
         void allocStates(std::size_t count, ompl::base::State **out) const;
 
       private:

@@ -9,19 +9,18 @@ namespace ompl_parc
     /** \brief Large buffers that fill whole 2 MiB pages (transparent huge pages), allocated once and written all over
         soon after: a team's composite states, the conflict detectors' per-pair arrays.
 
-        Why: the first write to each 4 KiB page of fresh memory is a page fault, and measured on this project's 2-core
-        virtual machine one costs about 14 us (6 MiB: 22 ms in 4 KiB pages, 0.4 ms in huge pages). At 1024 robots the
-        detectors' per-pair arrays are about 4000 such pages, some 50 ms before the first scan. From LARGE bytes on, a
+        Why: the first write to each 4 KiB page of fresh memory is a page fault, tens of microseconds each on a
+        virtual machine; at 1024 robots the detectors' per-pair arrays are thousands of such pages before the first
+        scan, where huge pages fault in once per 2 MiB. From LARGE bytes on, a
         buffer is mapped on its own, rounded up to whole 2 MiB pages (at most 4x the memory, for a buffer of LARGE
         bytes) and marked for huge pages; smaller ones come from operator new. Where huge pages are off, or the
         mapping could not be aligned, it is ordinary memory; outside Linux every buffer comes from operator new.
 
         A freed mapping is kept for the next buffer of the same mapped length (the newest first; at most KEPT_MAPPINGS
-        of them and KEPT_BYTES in all, the oldest unmapped to make room): a fresh huge page is not only zeroed, on this
-        project's VMs its first touch took 5-13 ms in some phases (4 of 6 solves in one run, none in another; the host
-        backing it), and a planner used in a loop (the benchmark tool, Python, a user's code) would pay that for its
-        solution path's states at every solve: Mobile Cross 256's path took 0.7-13 ms per worker to allocate, 0.2-0.3
-        ms from kept mappings. */
+        of them and KEPT_BYTES in all, the oldest unmapped to make room): a fresh huge page is not only zeroed, on a
+        virtual machine its first touch can take milliseconds (the host backing it), and a planner used in a loop (the
+        benchmark tool, Python, a user's code) would pay that for its solution path's states at every solve; kept
+        mappings are an order of magnitude faster (docs/results.md). */
     class HugePageMemory
     {
       public:

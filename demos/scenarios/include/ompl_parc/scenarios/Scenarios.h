@@ -8,7 +8,7 @@
 
 namespace ompl_parc
 {
-    /** \brief The paper's benchmark scenarios, built from their published formulas (see README).
+    /** \brief The paper's benchmark scenarios, built from their published formulas (docs/benchmarking.md).
 
         Each throws ompl::Exception for a robot count it cannot build (odd, or below 2). */
     namespace scenarios
