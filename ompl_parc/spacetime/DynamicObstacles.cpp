@@ -3,7 +3,7 @@
 #include "ompl_parc/collision/CapsuleCollision.h"
 #include "ompl_parc/spacetime/SpaceTimeMotionValidator.h"
 #include "ompl_parc/spacetime/SpaceTimeValidityChecker.h"
-#include "ompl_parc/spacetime/SpaceTimeStateSpace.h"
+#include "ompl_parc/spacetime/SpaceTimeInUse.h"
 #include "ompl_parc/statespaces/SpaceRegistryLock.h"
 
 #include <ompl/util/Exception.h>

@@ -1,6 +1,6 @@
 #include "ompl_parc/spacetime/SpaceTimeMotionValidator.h"
 
-#include "ompl_parc/spacetime/SpaceTimeStateSpace.h"
+#include "ompl_parc/spacetime/SpaceTimeInUse.h"
 #include "ompl_parc/util/StopSignal.h"
 
 #include <ompl/base/SpaceInformation.h>

@@ -1,6 +1,6 @@
 #include "ompl_parc/spacetime/SpaceTimeValidityChecker.h"
 
-#include "ompl_parc/spacetime/SpaceTimeStateSpace.h"
+#include "ompl_parc/spacetime/SpaceTimeInUse.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 

@@ -4,7 +4,7 @@
 #include "ompl_parc/planners/subproblem/BlockingOrder.h"
 #include "ompl_parc/spacetime/LatticeSearch.h"
 #include "ompl_parc/spacetime/SpaceTimeMotionValidator.h"
-#include "ompl_parc/spacetime/SpaceTimeStateSpace.h"
+#include "ompl_parc/spacetime/SpaceTimeInUse.h"
 #include "ompl_parc/statespaces/SpaceRegistryLock.h"
 #include "ompl_parc/util/SeededRealVectorSampler.h"
 

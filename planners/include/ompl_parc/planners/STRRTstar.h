@@ -1,7 +1,7 @@
 #ifndef OMPL_PARC_PLANNERS_STRRT_STAR_
 #define OMPL_PARC_PLANNERS_STRRT_STAR_
 
-#include "ompl_parc/spacetime/SpaceTimeStateSpace.h"
+#include "ompl_parc/spacetime/SpaceTimeInUse.h"
 
 #include <ompl/base/Planner.h>
 #include <ompl/base/StateSampler.h>

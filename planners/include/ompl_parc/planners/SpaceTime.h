@@ -7,7 +7,7 @@
     ompl_parc::spacetime::SpaceTimeStateSpace and ompl_parc::spacetime::STRRTstar. PP-ST-RRT needs a minimum
     goal time, which OMPL's planner lacks, so it always uses ompl_parc::STRRTstar (in the same space). */
 
-#include "ompl_parc/spacetime/SpaceTimeStateSpace.h"
+#include "ompl_parc/spacetime/SpaceTimeInUse.h"
 
 #if OMPL_PARC_OMPL_HAS_SPACE_TIME
 #include <ompl/geometric/planners/rrt/STRRTstar.h>

@@ -2,7 +2,7 @@
 #define OMPL_PARC_PLANNERS_SPACE_TIME_NEAREST_NEIGHBORS_
 
 #include "ompl_parc/planners/SpaceTimeGrid.h"
-#include "ompl_parc/spacetime/SpaceTimeStateSpace.h"
+#include "ompl_parc/spacetime/SpaceTimeInUse.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/spaces/TimeStateSpace.h>

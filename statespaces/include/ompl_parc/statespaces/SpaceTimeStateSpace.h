@@ -16,7 +16,7 @@ namespace ompl_parc
 
         OMPL 1.5 has no space-time space; this one behaves like OMPL >= 1.6's
         ompl::base::SpaceTimeStateSpace, and is only built against OMPL < 1.6 (ompl_parc plans in
-        spacetime::SpaceTimeStateSpace of ompl_parc/spacetime/SpaceTimeStateSpace.h, whichever is in use). It is a
+        spacetime::SpaceTimeStateSpace of ompl_parc/spacetime/SpaceTimeInUse.h, whichever is in use). It is a
         compound of the space component (weight 1 - timeWeight) and a TimeStateSpace (weight timeWeight).
         The distance between two states is infinite when going from one to the other would need a speed above
         vMax; otherwise it is the weighted sum of the space distance and the time difference. Like OMPL's,

@@ -1,5 +1,5 @@
-#ifndef OMPL_PARC_SPACETIME_SPACE_TIME_STATE_SPACE_
-#define OMPL_PARC_SPACETIME_SPACE_TIME_STATE_SPACE_
+#ifndef OMPL_PARC_SPACETIME_SPACE_TIME_IN_USE_
+#define OMPL_PARC_SPACETIME_SPACE_TIME_IN_USE_
 
 /** \file
     \brief The space-time state space all of ompl_parc plans in: OMPL's own from OMPL 1.6 on, ours (the same
