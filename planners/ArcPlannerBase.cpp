@@ -208,22 +208,19 @@ void ompl_parc::ArcPlannerBase::setSeed(unsigned int seed)
 
 void ompl_parc::ArcPlannerBase::setWorkers(unsigned int workers)
 {
-    if (workers == 0)
-        throw ompl::Exception(getName(), "workers must be at least 1");
+    WorkerPool::checkWorkers(workers, getName());
     options_.workers = workers;
 }
 
 void ompl_parc::ArcPlannerBase::setHorizon(unsigned int horizon)
 {
-    if (horizon == 0)
-        throw ompl::Exception(getName(), "horizon must be at least 1 timestep");
+    BatchDetector::checkHorizon(horizon, getName());
     options_.horizon = horizon;
 }
 
 void ompl_parc::ArcPlannerBase::setBatchPerWorker(unsigned int conflicts)
 {
-    if (conflicts == 0)
-        throw ompl::Exception(getName(), "batch_per_worker must be at least 1");
+    RepairWorkspace::checkBatchPerWorker(conflicts, getName());
     options_.batchPerWorker = conflicts;
 }
 
