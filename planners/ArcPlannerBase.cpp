@@ -106,23 +106,20 @@ void ompl_parc::ArcPlannerBase::setSeed(unsigned int seed)
     seed_ = seed;
 }
 
-void ompl_parc::ArcPlannerBase::setWorkers(unsigned int workers)
-{
-    WorkerPool::checkWorkers(workers, getName());
-    options_.workers = workers;
-}
-
-void ompl_parc::ArcPlannerBase::setHorizon(unsigned int horizon)
-{
-    BatchDetector::checkHorizon(horizon, getName());
-    options_.horizon = horizon;
-}
-
-void ompl_parc::ArcPlannerBase::setBatchPerWorker(unsigned int conflicts)
-{
-    RepairWorkspace::checkBatchPerWorker(conflicts, getName());
-    options_.batchPerWorker = conflicts;
-}
+// The parallel knobs' setters and getters (ParcKnobs.def), checked before anything changes.
+#define OMPL_PARC_PARALLEL_KNOB(Name, member, parameter, Parameter, range, check)                                     \
+    void ompl_parc::ArcPlannerBase::set##Name(Parameter value)                                                         \
+    {                                                                                                                  \
+        [[maybe_unused]] const std::string &who = getName();                                                           \
+        check;                                                                                                         \
+        options_.member = value;                                                                                       \
+    }                                                                                                                  \
+                                                                                                                       \
+    Parameter ompl_parc::ArcPlannerBase::get##Name() const                                                             \
+    {                                                                                                                  \
+        return static_cast<Parameter>(options_.member);                                                                \
+    }
+#include "ompl_parc/arc/ParcKnobs.def"
 
 const ompl_parc::MultiRobotPlan &ompl_parc::ArcPlannerBase::getPlan() const
 {

@@ -101,20 +101,12 @@ namespace ompl_parc
       protected:
         /** \name P-ARC's parallel parameters (ARC: one worker, the whole plan per detection round)
             @{ */
-        void setWorkers(unsigned int workers);
-        unsigned int getWorkers() const { return options_.workers; }
-        void setHorizon(unsigned int horizon);
-        unsigned int getHorizon() const { return static_cast<unsigned int>(options_.horizon); }
-        void setOptimistic(bool optimistic) { options_.optimistic = optimistic; }
-        bool getOptimistic() const { return options_.optimistic; }
-        /** \brief Conflicts per worker a batch may hold (RepairLoopOptions::batchPerWorker); throws for 0. */
-        void setBatchPerWorker(unsigned int conflicts);
-        unsigned int getBatchPerWorker() const { return options_.batchPerWorker; }
-        /** \brief Batches grow while their repairs do not meet (RepairLoopOptions::growBatches). */
-        void setGrowBatches(bool grow) { options_.growBatches = grow; }
-        bool getGrowBatches() const { return options_.growBatches; }
-        void setLocalOr(bool localOr) { options_.localOr = localOr; }
-        bool getLocalOr() const { return options_.localOr; }
+        /* One setter and getter per knob of ompl_parc/arc/ParcKnobs.def: setWorkers(unsigned int), getWorkers(),
+           setBatchPerWorker(unsigned int), ... The setter throws ompl::Exception for a refused value. */
+#define OMPL_PARC_PARALLEL_KNOB(Name, member, parameter, Parameter, ...)                                               \
+    void set##Name(Parameter value);                                                                                   \
+    Parameter get##Name() const;
+#include "ompl_parc/arc/ParcKnobs.def"
         /** @} */
 
         /** \brief The engine of the current problem (null before the first solve() and after clear()). */
