@@ -9,52 +9,28 @@
 
 ompl_parc::ArcSettings ompl_parc::ArcSettings::profile(const std::string &name)
 {
+    const std::vector<std::string> names = profileNames();
+    const auto found = std::find(names.begin(), names.end(), name);
+    if (found == names.end())
+        throw ompl::Exception("ArcSettings", "unknown profile '" + name + "' (valid: mobile, planar, panda)");
+    const auto which = static_cast<std::size_t>(found - names.begin());  // ArcKnobs.def's column of the profile
     ArcSettings s;
-    if (name == "mobile")
-        return s;
-    if (name == "planar" || name == "panda")
-    {
-        s.window = name == "planar" ? 100 : 20;
-        s.growth = Growth::EXPONENTIAL;
-        s.growthStep = 1.05;
-        s.endpointStep = 10;
-        s.boundMargin = 1.;
-        s.minBoundRange = 0.5;
-        s.sampleCap = 50000;
-        if (name == "panda")
-        {
-            s.minWindowGrowth = 1.25;
-            s.solvers = Solvers::COMPOSITE;
-            s.sequential = true;
-            s.shortenPatches = true;
-        }
-        return s;
+#define OMPL_PARC_ARC_KNOB(Name, member, parameter, Type, Parameter, range, valid, otherwise, mobile, planar, panda) \
+    {                                                                                                                  \
+        const Type values[] = {mobile, planar, panda};                                                                 \
+        s.member = values[which];                                                                                      \
     }
-    throw ompl::Exception("ArcSettings", "unknown profile '" + name + "' (valid: mobile, planar, panda)");
+#include "ompl_parc/arc/ArcKnobs.def"
+    return s;
 }
 
 void ompl_parc::ArcSettings::applyProfile(const std::string &name)
 {
     const ArcSettings p = profile(name);
-    const auto take = [this](Field field, auto &mine, const auto &theirs)
-    {
-        if ((explicitFields & field) == 0)
-            mine = theirs;
-    };
-    take(WINDOW, window, p.window);
-    take(GROWTH, growth, p.growth);
-    take(GROWTH_STEP, growthStep, p.growthStep);
-    take(MIN_WINDOW_GROWTH, minWindowGrowth, p.minWindowGrowth);
-    take(ENDPOINT_STEP, endpointStep, p.endpointStep);
-    take(BOUND_MARGIN, boundMargin, p.boundMargin);
-    take(MIN_BOUND_RANGE, minBoundRange, p.minBoundRange);
-    take(SAMPLE_CAP, sampleCap, p.sampleCap);
-    take(SOLVERS, solvers, p.solvers);
-    take(SIMPLIFY_INITIAL, simplifyInitial, p.simplifyInitial);
-    take(SHORTEN_PATCHES, shortenPatches, p.shortenPatches);
-    take(STRAIGHT_INITIAL, straightInitial, p.straightInitial);
-    take(LATTICE_MAPF, latticeMapf, p.latticeMapf);
-    take(SEQUENTIAL, sequential, p.sequential);
+#define OMPL_PARC_ARC_KNOB(Name, member, ...)                                                                          \
+    if (!isExplicit(Knob::member))                                                                                     \
+        member = p.member;
+#include "ompl_parc/arc/ArcKnobs.def"
 }
 
 std::string ompl_parc::ArcSettings::profileFor(const MultiRobotSpaceInformation &si)

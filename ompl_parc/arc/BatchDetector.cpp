@@ -18,10 +18,15 @@ ompl_parc::BatchDetector::BatchDetector(ConflictDetector &detector, WorkerPool &
     reset();
 }
 
-void ompl_parc::BatchDetector::configure(std::size_t horizon, std::size_t capacity, bool optimistic)
+void ompl_parc::BatchDetector::checkHorizon(std::size_t horizon, const std::string &who)
 {
     if (horizon == 0)
-        throw ompl::Exception("BatchDetector", "the horizon must be at least 1 timestep");
+        throw ompl::Exception(who, "horizon must be at least 1 timestep");
+}
+
+void ompl_parc::BatchDetector::configure(std::size_t horizon, std::size_t capacity, bool optimistic)
+{
+    checkHorizon(horizon);
     if (capacity == 0)
         throw ompl::Exception("BatchDetector", "a batch must hold at least one conflict");
     horizon_ = horizon;

@@ -9,6 +9,7 @@
 #include <ompl/base/PlannerTerminationCondition.h>
 
 #include <limits>
+#include <string>
 
 namespace ompl_parc
 {
@@ -47,6 +48,9 @@ namespace ompl_parc
         /** \brief Use \e horizon, \e capacity and \e optimistic (as in the constructor) from the next detect() on;
             the pairs in play stay. Throws ompl::Exception for a zero horizon or capacity. */
         void configure(std::size_t horizon, std::size_t capacity, bool optimistic);
+        /** \brief Throws ompl::Exception, reported by \e who, for a zero horizon: the one check of a sync horizon,
+            made here and, as a parameter is set, by P-ARC's \e horizon. */
+        static void checkHorizon(std::size_t horizon, const std::string &who = "BatchDetector");
 
         /** \brief A batch is full at \e capacity conflicts from the next detect() on (horizon and independence as
             configured). Throws ompl::Exception for 0. */

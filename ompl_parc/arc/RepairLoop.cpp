@@ -55,12 +55,7 @@ ompl_parc::RepairLoop::~RepairLoop() = default;
 
 void ompl_parc::RepairLoop::configure(RepairLoopOptions options)
 {
-    if (options.workers == 0)
-        throw ompl::Exception("RepairLoop", "workers must be at least 1");
-    if (options.horizon == 0)
-        throw ompl::Exception("RepairLoop", "the horizon must be at least 1 timestep");
-    if (options.batchPerWorker == 0)
-        throw ompl::Exception("RepairLoop", "a batch must hold at least one conflict per worker");
+    // The workspace checks the parallel values (RepairWorkspace::configure()) before anything here changes.
     workspace_.configure(options.workers, options.horizon, options.batchPerWorker, options.optimistic);
     baseCapacity_ = capacity_ = workspace_.getBatchDetector().getCapacity();
     resolver_ =

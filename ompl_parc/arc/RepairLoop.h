@@ -21,7 +21,8 @@
 namespace ompl_parc
 {
     /** \brief How a RepairLoop runs: ARC's settings, the subproblem solvers in the order they are tried, and
-        P-ARC's parallel knobs. ARC is one worker with an unbounded horizon. */
+        P-ARC's parallel knobs (the planners' parameters for them: ompl_parc/arc/ParcKnobs.def). ARC is one worker
+        with an unbounded horizon. */
     struct RepairLoopOptions
     {
         ArcSettings settings;

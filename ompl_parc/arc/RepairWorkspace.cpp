@@ -9,10 +9,15 @@ ompl_parc::RepairWorkspace::RepairWorkspace(const MultiRobotSpaceInformation &si
         std::make_unique<BatchDetector>(detector_, *pool_, BatchDetector::UNBOUNDED, capacityFor(workers, 1), false);
 }
 
-std::size_t ompl_parc::RepairWorkspace::capacityFor(unsigned int workers, unsigned int batchPerWorker)
+void ompl_parc::RepairWorkspace::checkBatchPerWorker(unsigned int batchPerWorker, const std::string &who)
 {
     if (batchPerWorker == 0)
-        throw ompl::Exception("RepairWorkspace", "a batch must hold at least one conflict per worker");
+        throw ompl::Exception(who, "batch_per_worker must be at least 1");
+}
+
+std::size_t ompl_parc::RepairWorkspace::capacityFor(unsigned int workers, unsigned int batchPerWorker)
+{
+    checkBatchPerWorker(batchPerWorker);
     return workers == 1 ? 1 : std::size_t{workers} * batchPerWorker;
 }
 

@@ -7,6 +7,7 @@
 #include "ompl_parc/parallel/WorkerPool.h"
 
 #include <memory>
+#include <string>
 
 namespace ompl_parc
 {
@@ -31,6 +32,11 @@ namespace ompl_parc
             (one in all for a single worker: ARC's earliest conflict) and \e optimistic batch independence
             (BatchDetector). Throws ompl::Exception for 0 workers, horizon or conflicts per worker. */
         void configure(unsigned int workers, std::size_t horizon, unsigned int batchPerWorker, bool optimistic);
+
+        /** \brief Throws ompl::Exception, reported by \e who, unless a batch may hold \e batchPerWorker conflicts per
+            worker (at least one): the one check of the value, made by configure() and, as a parameter is set, by
+            P-ARC's \e batch_per_worker. */
+        static void checkBatchPerWorker(unsigned int batchPerWorker, const std::string &who = "RepairWorkspace");
 
         /** \brief Forget the last query: every pair's frontier back to timestep 0 and every pair in play. */
         void reset();

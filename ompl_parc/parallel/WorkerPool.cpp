@@ -45,10 +45,15 @@ namespace
 #endif
 }  // namespace
 
-ompl_parc::WorkerPool::WorkerPool(unsigned int workers) : workers_(workers), spin_(workers <= usableCores())
+void ompl_parc::WorkerPool::checkWorkers(unsigned int workers, const std::string &who)
 {
     if (workers == 0)
-        throw ompl::Exception("WorkerPool", "needs at least one worker");
+        throw ompl::Exception(who, "workers must be at least 1");
+}
+
+ompl_parc::WorkerPool::WorkerPool(unsigned int workers) : workers_(workers), spin_(workers <= usableCores())
+{
+    checkWorkers(workers);
     cpu_.assign(workers, 0.);
     threads_.reserve(workers - 1);
     try

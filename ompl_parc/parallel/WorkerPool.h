@@ -6,6 +6,7 @@
 #include <exception>
 #include <functional>
 #include <mutex>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -36,13 +37,16 @@ namespace ompl_parc
     class WorkerPool
     {
       public:
-        /** \brief Throws ompl::Exception for zero workers. */
+        /** \brief Throws ompl::Exception for zero workers (checkWorkers()). */
         explicit WorkerPool(unsigned int workers);
         ~WorkerPool();
         WorkerPool(const WorkerPool &) = delete;
         WorkerPool &operator=(const WorkerPool &) = delete;
 
         unsigned int getWorkerCount() const { return workers_; }
+        /** \brief Throws ompl::Exception, reported by \e who, for zero workers: the one check of a worker count,
+            made by the pool and, as a parameter is set, by the planners that make pools (P-ARC's \e workers). */
+        static void checkWorkers(unsigned int workers, const std::string &who = "WorkerPool");
 
         /** \brief Run \e body(worker) on every worker; returns per-worker CPU seconds of this stage. Not reentrant:
             one stage at a time, from one thread. */

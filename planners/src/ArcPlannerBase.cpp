@@ -65,31 +65,9 @@ ompl_parc::ArcPlannerBase::ArcPlannerBase(const ob::SpaceInformationPtr &si, con
     smoothing_.setReplanner([] { return PrioritizedSTRRTSolver::makeReplanner(); });
     smoothing_.setTeamSolver(&LatticeMapfSolver::makeTeamSolver);
     smoothing_.setTeamReplanShare(0.5);
-    declareParam<unsigned int>("window", this, &ArcPlannerBase::setWindow, &ArcPlannerBase::getWindow, "1:10:2000");
-    declareParam<std::string>("growth", this, &ArcPlannerBase::setGrowth, &ArcPlannerBase::getGrowth,
-                              "linear,exponential");
-    declareParam<double>("growth_step", this, &ArcPlannerBase::setGrowthStep, &ArcPlannerBase::getGrowthStep,
-                         "0.:1.:1000.");
-    declareParam<double>("min_window_growth", this, &ArcPlannerBase::setMinWindowGrowth,
-                         &ArcPlannerBase::getMinWindowGrowth, "1.:0.05:4.");
-    declareParam<unsigned int>("endpoint_step", this, &ArcPlannerBase::setEndpointStep,
-                               &ArcPlannerBase::getEndpointStep, "1:10:1000");
-    declareParam<double>("bound_margin", this, &ArcPlannerBase::setBoundMargin, &ArcPlannerBase::getBoundMargin,
-                         "0.:0.5:10.");
-    declareParam<double>("min_bound_range", this, &ArcPlannerBase::setMinBoundRange, &ArcPlannerBase::getMinBoundRange,
-                         "0.1:0.1:10.");
-    declareParam<unsigned int>("sample_cap", this, &ArcPlannerBase::setSampleCap, &ArcPlannerBase::getSampleCap,
-                               "0:1000:100000");
-    declareParam<std::string>("solvers", this, &ArcPlannerBase::setSolvers, &ArcPlannerBase::getSolvers,
-                              "hierarchy,composite,prioritized,composite-first");
-    declareParam<bool>("simplify_initial", this, &ArcPlannerBase::setSimplifyInitial,
-                       &ArcPlannerBase::getSimplifyInitial, "0,1");
-    declareParam<bool>("straight_initial", this, &ArcPlannerBase::setStraightInitial,
-                       &ArcPlannerBase::getStraightInitial, "0,1");
-    declareParam<bool>("shorten_patches", this, &ArcPlannerBase::setShortenPatches, &ArcPlannerBase::getShortenPatches,
-                       "0,1");
-    declareParam<bool>("lattice_mapf", this, &ArcPlannerBase::setLatticeMapf, &ArcPlannerBase::getLatticeMapf, "0,1");
-    declareParam<bool>("sequential", this, &ArcPlannerBase::setSequential, &ArcPlannerBase::getSequential, "0,1");
+#define OMPL_PARC_ARC_KNOB(Name, member, parameter, Type, Parameter, range, ...)                                       \
+    declareParam<Parameter>(parameter, this, &ArcPlannerBase::set##Name, &ArcPlannerBase::get##Name, range);
+#include "ompl_parc/arc/ArcKnobs.def"
     declareParam<unsigned int>("seed", this, &ArcPlannerBase::setSeed, &ArcPlannerBase::getSeed);
     declareParam<std::string>("objective", this, &ArcPlannerBase::setObjective, &ArcPlannerBase::getObjective,
                               "first,makespan,sum_of_costs");
@@ -105,127 +83,43 @@ void ompl_parc::ArcPlannerBase::setProfile(const std::string &profile)
     profile_ = profile;
 }
 
-void ompl_parc::ArcPlannerBase::setWindow(unsigned int window)
-{
-    if (window == 0)
-        throw ompl::Exception(getName(), "window must be at least 1 timestep");
-    options_.settings.window = window;
-    options_.settings.explicitFields |= ArcSettings::WINDOW;
-}
-
-void ompl_parc::ArcPlannerBase::setGrowth(const std::string &growth)
-{
-    options_.settings.growth = ArcSettings::growthFromString(growth);
-    options_.settings.explicitFields |= ArcSettings::GROWTH;
-}
-
-void ompl_parc::ArcPlannerBase::setGrowthStep(double step)
-{
-    if (!(step > 0.))
-        throw ompl::Exception(getName(), "growth_step must be positive");
-    options_.settings.growthStep = step;
-    options_.settings.explicitFields |= ArcSettings::GROWTH_STEP;
-}
-
-void ompl_parc::ArcPlannerBase::setMinWindowGrowth(double factor)
-{
-    if (!(factor >= 1. && factor <= 1e6))
-        throw ompl::Exception(getName(), "min_window_growth must be between 1 and 1e6");
-    options_.settings.minWindowGrowth = factor;
-    options_.settings.explicitFields |= ArcSettings::MIN_WINDOW_GROWTH;
-}
-
-void ompl_parc::ArcPlannerBase::setEndpointStep(unsigned int step)
-{
-    if (step == 0)
-        throw ompl::Exception(getName(), "endpoint_step must be at least 1 timestep");
-    options_.settings.endpointStep = step;
-    options_.settings.explicitFields |= ArcSettings::ENDPOINT_STEP;
-}
-
-void ompl_parc::ArcPlannerBase::setBoundMargin(double margin)
-{
-    if (!(margin >= 0.))
-        throw ompl::Exception(getName(), "bound_margin must be non-negative");
-    options_.settings.boundMargin = margin;
-    options_.settings.explicitFields |= ArcSettings::BOUND_MARGIN;
-}
-
-void ompl_parc::ArcPlannerBase::setMinBoundRange(double range)
-{
-    if (!(range > 0.))
-        throw ompl::Exception(getName(), "min_bound_range must be positive");
-    options_.settings.minBoundRange = range;
-    options_.settings.explicitFields |= ArcSettings::MIN_BOUND_RANGE;
-}
-
-void ompl_parc::ArcPlannerBase::setSampleCap(unsigned int cap)
-{
-    options_.settings.sampleCap = cap;
-    options_.settings.explicitFields |= ArcSettings::SAMPLE_CAP;
-}
-
-void ompl_parc::ArcPlannerBase::setSolvers(const std::string &solvers)
-{
-    options_.settings.solvers = ArcSettings::solversFromString(solvers);
-    options_.settings.explicitFields |= ArcSettings::SOLVERS;
-}
-
-void ompl_parc::ArcPlannerBase::setSimplifyInitial(bool simplify)
-{
-    options_.settings.simplifyInitial = simplify;
-    options_.settings.explicitFields |= ArcSettings::SIMPLIFY_INITIAL;
-}
-
-void ompl_parc::ArcPlannerBase::setStraightInitial(bool straight)
-{
-    options_.settings.straightInitial = straight;
-    options_.settings.explicitFields |= ArcSettings::STRAIGHT_INITIAL;
-}
-
-void ompl_parc::ArcPlannerBase::setShortenPatches(bool shorten)
-{
-    options_.settings.shortenPatches = shorten;
-    options_.settings.explicitFields |= ArcSettings::SHORTEN_PATCHES;
-}
-
-void ompl_parc::ArcPlannerBase::setLatticeMapf(bool mapf)
-{
-    options_.settings.latticeMapf = mapf;
-    options_.settings.explicitFields |= ArcSettings::LATTICE_MAPF;
-}
-
-void ompl_parc::ArcPlannerBase::setSequential(bool sequential)
-{
-    options_.settings.sequential = sequential;
-    options_.settings.explicitFields |= ArcSettings::SEQUENTIAL;
-}
+// The knobs' setters and getters (ArcKnobs.def). The value is read (an enumerator by its name) and checked before
+// anything changes, so a refused value leaves the settings as they were.
+#define OMPL_PARC_ARC_KNOB(Name, member, parameter, Type, Parameter, range, valid, otherwise, ...)                     \
+    void ompl_parc::ArcPlannerBase::set##Name(ParameterArgument<Parameter> parameterValue)                             \
+    {                                                                                                                  \
+        const auto value = ArcSettings::fromParameter(parameterValue, &options_.settings.member);                      \
+        if (!(valid))                                                                                                  \
+            throw ompl::Exception(getName(), std::string(parameter) + " " + (otherwise));                              \
+        options_.settings.member = value;                                                                              \
+        options_.settings.setExplicit(ArcSettings::Knob::member);                                                      \
+    }                                                                                                                  \
+                                                                                                                       \
+    Parameter ompl_parc::ArcPlannerBase::get##Name() const                                                             \
+    {                                                                                                                  \
+        return ArcSettings::toParameter(getSettings().member);                                                         \
+    }
+#include "ompl_parc/arc/ArcKnobs.def"
 
 void ompl_parc::ArcPlannerBase::setSeed(unsigned int seed)
 {
     seed_ = seed;
 }
 
-void ompl_parc::ArcPlannerBase::setWorkers(unsigned int workers)
-{
-    if (workers == 0)
-        throw ompl::Exception(getName(), "workers must be at least 1");
-    options_.workers = workers;
-}
-
-void ompl_parc::ArcPlannerBase::setHorizon(unsigned int horizon)
-{
-    if (horizon == 0)
-        throw ompl::Exception(getName(), "horizon must be at least 1 timestep");
-    options_.horizon = horizon;
-}
-
-void ompl_parc::ArcPlannerBase::setBatchPerWorker(unsigned int conflicts)
-{
-    if (conflicts == 0)
-        throw ompl::Exception(getName(), "batch_per_worker must be at least 1");
-    options_.batchPerWorker = conflicts;
-}
+// The parallel knobs' setters and getters (ParcKnobs.def), checked before anything changes.
+#define OMPL_PARC_PARALLEL_KNOB(Name, member, parameter, Parameter, range, check)                                     \
+    void ompl_parc::ArcPlannerBase::set##Name(Parameter value)                                                         \
+    {                                                                                                                  \
+        [[maybe_unused]] const std::string &who = getName();                                                           \
+        check;                                                                                                         \
+        options_.member = value;                                                                                       \
+    }                                                                                                                  \
+                                                                                                                       \
+    Parameter ompl_parc::ArcPlannerBase::get##Name() const                                                             \
+    {                                                                                                                  \
+        return static_cast<Parameter>(options_.member);                                                                \
+    }
+#include "ompl_parc/arc/ParcKnobs.def"
 
 const ompl_parc::MultiRobotPlan &ompl_parc::ArcPlannerBase::getPlan() const
 {

@@ -6,12 +6,9 @@ ompl_parc::PARC::PARC(const ob::SpaceInformationPtr &si) : ArcPlannerBase(si, "P
 {
     specs_.multithreaded = true;
     setHorizon(400);
-    declareParam<unsigned int>("workers", this, &PARC::setWorkers, &PARC::getWorkers, "1:1:64");
-    declareParam<unsigned int>("horizon", this, &PARC::setHorizon, &PARC::getHorizon, "1:50:2000");
-    declareParam<unsigned int>("batch_per_worker", this, &PARC::setBatchPerWorker, &PARC::getBatchPerWorker, "1:1:64");
-    declareParam<bool>("grow_batches", this, &PARC::setGrowBatches, &PARC::getGrowBatches, "0,1");
-    declareParam<bool>("optimistic", this, &PARC::setOptimistic, &PARC::getOptimistic, "0,1");
-    declareParam<bool>("local_or", this, &PARC::setLocalOr, &PARC::getLocalOr, "0,1");
+#define OMPL_PARC_PARALLEL_KNOB(Name, member, parameter, Parameter, range, ...)                                      \
+    declareParam<Parameter>(parameter, this, &PARC::set##Name, &PARC::get##Name, range);
+#include "ompl_parc/arc/ParcKnobs.def"
 }
 
 const ompl_parc::ParcStatistics &ompl_parc::PARC::getParallelStatistics() const

@@ -16,6 +16,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
 
 namespace ompl_parc
 {
@@ -71,35 +72,17 @@ namespace ompl_parc
             default): the profile of the team's robots (ArcSettings::profileFor()). */
         void setProfile(const std::string &profile);
         std::string getProfile() const { return profile_; }
-        void setWindow(unsigned int window);
-        unsigned int getWindow() const { return getSettings().window; }
-        void setGrowth(const std::string &growth);
-        std::string getGrowth() const { return ArcSettings::toString(getSettings().growth); }
-        void setGrowthStep(double step);
-        double getGrowthStep() const { return getSettings().growthStep; }
-        /** \brief ArcSettings::minWindowGrowth; at least 1 (1: every window of the schedule is tried). */
-        void setMinWindowGrowth(double factor);
-        double getMinWindowGrowth() const { return getSettings().minWindowGrowth; }
-        void setEndpointStep(unsigned int step);
-        unsigned int getEndpointStep() const { return getSettings().endpointStep; }
-        void setBoundMargin(double margin);
-        double getBoundMargin() const { return getSettings().boundMargin; }
-        void setMinBoundRange(double range);
-        double getMinBoundRange() const { return getSettings().minBoundRange; }
-        void setSampleCap(unsigned int cap);
-        unsigned int getSampleCap() const { return getSettings().sampleCap; }
-        void setSolvers(const std::string &solvers);
-        std::string getSolvers() const { return ArcSettings::toString(getSettings().solvers); }
-        void setSimplifyInitial(bool simplify);
-        bool getSimplifyInitial() const { return getSettings().simplifyInitial; }
-        void setStraightInitial(bool straight);
-        bool getStraightInitial() const { return getSettings().straightInitial; }
-        void setShortenPatches(bool shorten);
-        bool getShortenPatches() const { return getSettings().shortenPatches; }
-        void setLatticeMapf(bool mapf);
-        bool getLatticeMapf() const { return getSettings().latticeMapf; }
-        void setSequential(bool sequential);
-        bool getSequential() const { return getSettings().sequential; }
+        /** \brief A setter's argument for a parameter of type \e T: a string by reference, a number by value. */
+        template <typename T>
+        using ParameterArgument = std::conditional_t<std::is_class_v<T>, const T &, T>;
+        /* One setter and getter per ArcSettings knob (ompl_parc/arc/ArcKnobs.def, which says what each does):
+           setWindow(unsigned int) and getWindow(), setGrowth(const std::string &) and getGrowth(), ... The setter
+           throws ompl::Exception for a value out of the knob's range and marks the knob set, so that a profile set
+           later keeps it (ArcSettings::explicitFields). */
+#define OMPL_PARC_ARC_KNOB(Name, member, parameter, Type, Parameter, ...)                                              \
+    void set##Name(ParameterArgument<Parameter> value);                                                                \
+    Parameter get##Name() const;
+#include "ompl_parc/arc/ArcKnobs.def"
         /** \brief Seconds of time-aware shortcutting (PlanSmoother) after a solution; 0 (the default): none. */
         void setSmoothing(double seconds) { smoothing_.setBudget(seconds); }
         double getSmoothing() const { return smoothing_.getBudget(); }
@@ -118,20 +101,12 @@ namespace ompl_parc
       protected:
         /** \name P-ARC's parallel parameters (ARC: one worker, the whole plan per detection round)
             @{ */
-        void setWorkers(unsigned int workers);
-        unsigned int getWorkers() const { return options_.workers; }
-        void setHorizon(unsigned int horizon);
-        unsigned int getHorizon() const { return static_cast<unsigned int>(options_.horizon); }
-        void setOptimistic(bool optimistic) { options_.optimistic = optimistic; }
-        bool getOptimistic() const { return options_.optimistic; }
-        /** \brief Conflicts per worker a batch may hold (RepairLoopOptions::batchPerWorker); throws for 0. */
-        void setBatchPerWorker(unsigned int conflicts);
-        unsigned int getBatchPerWorker() const { return options_.batchPerWorker; }
-        /** \brief Batches grow while their repairs do not meet (RepairLoopOptions::growBatches). */
-        void setGrowBatches(bool grow) { options_.growBatches = grow; }
-        bool getGrowBatches() const { return options_.growBatches; }
-        void setLocalOr(bool localOr) { options_.localOr = localOr; }
-        bool getLocalOr() const { return options_.localOr; }
+        /* One setter and getter per knob of ompl_parc/arc/ParcKnobs.def: setWorkers(unsigned int), getWorkers(),
+           setBatchPerWorker(unsigned int), ... The setter throws ompl::Exception for a refused value. */
+#define OMPL_PARC_PARALLEL_KNOB(Name, member, parameter, Parameter, ...)                                               \
+    void set##Name(Parameter value);                                                                                   \
+    Parameter get##Name() const;
+#include "ompl_parc/arc/ParcKnobs.def"
         /** @} */
 
         /** \brief The engine of the current problem (null before the first solve() and after clear()). */

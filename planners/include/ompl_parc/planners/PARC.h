@@ -15,7 +15,10 @@ namespace ompl_parc
         here, more while the batches' repairs do not meet (grow_batches); the batch is repaired
         concurrently with ARC's conflict resolution, idle workers running extra randomised attempts of
         unsolved tasks (local OR) whose first success cancels the rest. The RepairLoop does all of it; this
-        shell declares its parameters. With W = 1 it computes exactly what ARC computes for the same seed. */
+        shell declares its parameters. With W = 1 it computes exactly what ARC computes for the same seed.
+
+        The parallel parameters, one entry each of ompl_parc/arc/ParcKnobs.def (ARC's are ArcSettings'):
+        \verbinclude ompl_parc/arc/ParcKnobs.def */
     class PARC : public ArcPlannerBase
     {
       public:
@@ -29,18 +32,10 @@ namespace ompl_parc
         /** \name Declared parameters: W, H, conflicts per worker in a batch, growing batches, optimistic or strict
             batches, local OR
             @{ */
-        using ArcPlannerBase::getBatchPerWorker;
-        using ArcPlannerBase::getGrowBatches;
-        using ArcPlannerBase::getHorizon;
-        using ArcPlannerBase::getLocalOr;
-        using ArcPlannerBase::getOptimistic;
-        using ArcPlannerBase::getWorkers;
-        using ArcPlannerBase::setBatchPerWorker;
-        using ArcPlannerBase::setGrowBatches;
-        using ArcPlannerBase::setHorizon;
-        using ArcPlannerBase::setLocalOr;
-        using ArcPlannerBase::setOptimistic;
-        using ArcPlannerBase::setWorkers;
+#define OMPL_PARC_PARALLEL_KNOB(Name, ...)                                                                             \
+    using ArcPlannerBase::set##Name;                                                                                   \
+    using ArcPlannerBase::get##Name;
+#include "ompl_parc/arc/ParcKnobs.def"
         /** @} */
     };
 }  // namespace ompl_parc
