@@ -657,6 +657,15 @@ ompl_parc::UrdfArm::UrdfArm(std::string name, EnvironmentPtr environment, Chain 
         capsules_.push_back({p.frame, toAligned * (s.pose * (-half)), toAligned * (s.pose * half), radius});
     }
     spheresOnly_ = std::all_of(capsules_.begin(), capsules_.end(), [](const LocalCapsule &c) { return c.a == c.b; });
+    // Groups pay where a link carries several capsules (on average at least GROUPED): a pair test then rules
+    // links out by their spheres, and the bounds skip the capsule boxes. A capsule per link or two (our Panda)
+    // stays with the boxes.
+    constexpr std::size_t GROUPED = 3;
+    for (std::size_t i = 1; i <= capsules_.size(); ++i)
+        if (i == capsules_.size() || capsules_[i].frame != capsules_[i - 1].frame)
+            groupEnds_.push_back(static_cast<std::uint32_t>(i));
+    if (capsules_.size() < GROUPED * groupEnds_.size())
+        groupEnds_.clear();
     std::vector<double> zero(getDimension());
     for (unsigned int k = 0; k < getDimension(); ++k)
         zero[k] = std::clamp(0., getBounds().low[k], getBounds().high[k]);
@@ -816,6 +825,8 @@ void ompl_parc::UrdfArm::computeCapsules(const double *q, CollisionBody &body) c
         body.bz_[i] = b.z();
         body.radius_[i] = c.radius;
     }
+    if (!groupEnds_.empty())
+        body.setGroups(groupEnds_.data(), groupEnds_.size());
 }
 
 bool ompl_parc::UrdfArm::solvePositionIk(const Eigen::Vector3d &target, std::mt19937 &rng, std::vector<double> &q,
