@@ -55,7 +55,10 @@ void ompl_parc::CollisionBody::setGroups(const std::uint32_t *ends, std::size_t 
     if (!increasing)
         throw std::invalid_argument("CollisionBody::setGroups: the group ends must increase up to size()");
     groupEnd_.assign(ends, ends + count);
+    for (auto *v : {&groupX_, &groupY_, &groupZ_, &groupRadius_})
+        v->resize(count);
     groupsCurrent_ = false;
+    groupSpheresGiven_ = false;
     boxesCurrent_ = false;
 }
 
@@ -145,13 +148,40 @@ void ompl_parc::CollisionBody::updateBound()
 void ompl_parc::CollisionBody::updateGroupBounds()
 {
     const std::size_t groups = groupEnd_.size();
-    for (auto *v : {&groupX_, &groupY_, &groupZ_, &groupRadius_})
-        v->resize(groups);
+    if (!groupSpheresGiven_)
+        computeGroupSpheres();
+    // The body's sphere around the group spheres: the centre of their box, the farthest group surface.
+    double lo[3] = {groupX_[0], groupY_[0], groupZ_[0]}, hi[3] = {groupX_[0], groupY_[0], groupZ_[0]};
+    for (std::size_t g = 0; g < groups; ++g)
+    {
+        lo[0] = std::min(lo[0], groupX_[g] - groupRadius_[g]);
+        hi[0] = std::max(hi[0], groupX_[g] + groupRadius_[g]);
+        lo[1] = std::min(lo[1], groupY_[g] - groupRadius_[g]);
+        hi[1] = std::max(hi[1], groupY_[g] + groupRadius_[g]);
+        lo[2] = std::min(lo[2], groupZ_[g] - groupRadius_[g]);
+        hi[2] = std::max(hi[2], groupZ_[g] + groupRadius_[g]);
+    }
+    centerX_ = 0.5 * (lo[0] + hi[0]);
+    centerY_ = 0.5 * (lo[1] + hi[1]);
+    centerZ_ = 0.5 * (lo[2] + hi[2]);
+    double radius = 0.;
+    for (std::size_t g = 0; g < groups; ++g)
+    {
+        const double dx = groupX_[g] - centerX_, dy = groupY_[g] - centerY_, dz = groupZ_[g] - centerZ_;
+        radius = std::max(radius, std::sqrt(dx * dx + dy * dy + dz * dz) + groupRadius_[g]);
+    }
+    boundRadius_ = radius;
+    boxesCurrent_ = false;
+    groupsCurrent_ = true;
+}
+
+void ompl_parc::CollisionBody::computeGroupSpheres()
+{
+    const std::size_t groups = groupEnd_.size();
     const double *ax = ax_.data(), *ay = ay_.data(), *az = az_.data();
     const double *bx = bx_.data(), *by = by_.data(), *bz = bz_.data(), *r = radius_.data();
     // Per group, like the body's sphere without groups: the centre of the box around its capsule axes, the
     // farthest capsule surface from it; padded (see groupRadius_).
-    double bodyLo[3], bodyHi[3];
     for (std::size_t g = 0, begin = 0; g < groups; begin = groupEnd_[g], ++g)
     {
         const std::size_t end = groupEnd_[g];
@@ -181,26 +211,7 @@ void ompl_parc::CollisionBody::updateGroupBounds()
         groupY_[g] = cy;
         groupZ_[g] = cz;
         groupRadius_[g] = radius + 0x1p-40 * scale;
-        for (std::size_t d = 0; d < 3; ++d)
-        {
-            const double c = d == 0 ? cx : d == 1 ? cy : cz;
-            bodyLo[d] = g == 0 ? c - groupRadius_[g] : std::min(bodyLo[d], c - groupRadius_[g]);
-            bodyHi[d] = g == 0 ? c + groupRadius_[g] : std::max(bodyHi[d], c + groupRadius_[g]);
-        }
     }
-    // The body's sphere around the group spheres: the centre of their box, the farthest group surface.
-    centerX_ = 0.5 * (bodyLo[0] + bodyHi[0]);
-    centerY_ = 0.5 * (bodyLo[1] + bodyHi[1]);
-    centerZ_ = 0.5 * (bodyLo[2] + bodyHi[2]);
-    double radius = 0.;
-    for (std::size_t g = 0; g < groups; ++g)
-    {
-        const double dx = groupX_[g] - centerX_, dy = groupY_[g] - centerY_, dz = groupZ_[g] - centerZ_;
-        radius = std::max(radius, std::sqrt(dx * dx + dy * dy + dz * dz) + groupRadius_[g]);
-    }
-    boundRadius_ = radius;
-    boxesCurrent_ = false;
-    groupsCurrent_ = true;
 }
 
 void ompl_parc::CollisionBody::updateBoxes()

@@ -57,6 +57,12 @@ namespace ompl_parc
             cover the body. */
         void setGroups(const std::uint32_t *ends, std::size_t count);
 
+        /** \brief For kinematics that know each group's bounding sphere (a rigid link's, moved with the link): after
+            setGroups(), write groupX_, groupY_, groupZ_ and groupRadius_ (each sphere containing its capsules with
+            room for the rounding of both) and call this; updateBound() then keeps them instead of computing them
+            from the capsules, a pass over every capsule. */
+        void keepGroupSpheres() { groupSpheresGiven_ = true; }
+
         /** \brief Recompute the bounding spheres (of the body and of each capsule) and the boxes (updateBoxes());
             call after the last addCapsule(). A body with groups (setGroups()) gets its group spheres instead of
             the boxes (hasGroupBounds()). */
@@ -126,11 +132,17 @@ namespace ompl_parc
         /** \brief The group spheres and, from them, the body's sphere (updateBound() of a body with groups). */
         void updateGroupBounds();
 
+        /** \brief The group spheres from the capsules (where the kinematics gave none: keepGroupSpheres()). */
+        void computeGroupSpheres();
+
         /** \brief See hasBoxes(). */
         bool boxesCurrent_{false};
 
         /** \brief See hasGroupBounds(). */
         bool groupsCurrent_{false};
+
+        /** \brief See keepGroupSpheres(). */
+        bool groupSpheresGiven_{false};
     };
 }  // namespace ompl_parc
 

@@ -239,6 +239,15 @@ namespace ompl_parc
             (CollisionBody::setGroups()) where the links carry several capsules each (a sphere model); empty
             otherwise. */
         std::vector<std::uint32_t> groupEnds_;
+        /** \brief Per group, the sphere around its capsules in their frame's aligned frame: moved with the frame, it
+            is the group's sphere (CollisionBody::keepGroupSpheres()) without a pass over the capsules. */
+        struct LocalSphere
+        {
+            std::size_t frame;
+            Eigen::Vector3d center;
+            double radius;
+        };
+        std::vector<LocalSphere> groupSpheres_;
         /** \brief The same checks, several configurations per call. */
         std::unique_ptr<UrdfArmLanes> lanes_;
     };
