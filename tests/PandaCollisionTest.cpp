@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <random>
 #include <regex>
@@ -127,6 +128,14 @@ TEST(PandaCollision, SphereModelGroupsGiveTheAnswersOfEveryPair)
         ASSERT_TRUE(bodyA.hasGroupBounds());
         ASSERT_FALSE(bodyA.hasBoxes());
         ASSERT_GT(bodyA.size(), 2 * bodyA.groupCount());
+        // The kinematics' group spheres (moved with their links) contain their capsules.
+        for (std::size_t g = 0, begin = 0; g < bodyA.groupCount(); begin = bodyA.groupEnd_[g], ++g)
+            for (std::size_t i = begin; i < bodyA.groupEnd_[g]; ++i)
+            {
+                const double dx = bodyA.ax_[i] - bodyA.groupX_[g], dy = bodyA.ay_[i] - bodyA.groupY_[g],
+                             dz = bodyA.az_[i] - bodyA.groupZ_[g];
+                ASSERT_LE(std::sqrt(dx * dx + dy * dy + dz * dz) + bodyA.radius_[i], bodyA.groupRadius_[g]);
+            }
         bool pairwise = false;
         for (std::size_t i = 0; i < bodyA.size() && !pairwise; ++i)
             for (std::size_t j = 0; j < bodyB.size() && !pairwise; ++j)
