@@ -129,13 +129,16 @@ TEST(PandaCollision, SphereModelGroupsGiveTheAnswersOfEveryPair)
         ASSERT_FALSE(bodyA.hasBoxes());
         ASSERT_GT(bodyA.size(), 2 * bodyA.groupCount());
         // The kinematics' group spheres (moved with their links) contain their capsules.
-        for (std::size_t g = 0, begin = 0; g < bodyA.groupCount(); begin = bodyA.groupEnd_[g], ++g)
-            for (std::size_t i = begin; i < bodyA.groupEnd_[g]; ++i)
+        std::size_t begin = 0;
+        for (const CollisionBody::Group &group : bodyA.groups_)
+        {
+            for (std::size_t i = begin; i < group.end; ++i)
             {
-                const double dx = bodyA.ax_[i] - bodyA.groupX_[g], dy = bodyA.ay_[i] - bodyA.groupY_[g],
-                             dz = bodyA.az_[i] - bodyA.groupZ_[g];
-                ASSERT_LE(std::sqrt(dx * dx + dy * dy + dz * dz) + bodyA.radius_[i], bodyA.groupRadius_[g]);
+                const double dx = bodyA.ax_[i] - group.x, dy = bodyA.ay_[i] - group.y, dz = bodyA.az_[i] - group.z;
+                ASSERT_LE(std::sqrt(dx * dx + dy * dy + dz * dz) + bodyA.radius_[i], group.radius);
             }
+            begin = group.end;
+        }
         bool pairwise = false;
         for (std::size_t i = 0; i < bodyA.size() && !pairwise; ++i)
             for (std::size_t j = 0; j < bodyB.size() && !pairwise; ++j)

@@ -49,36 +49,29 @@ namespace
         {
             if (body.hasGroupBounds())
             {
-                x = body.groupX_.data();
-                y = body.groupY_.data();
-                z = body.groupZ_.data();
-                r = body.groupRadius_.data();
-                end = body.groupEnd_.data();
+                group = body.groups_.data();
                 count = body.groupCount();
                 return;
             }
-            whole[0] = body.centerX_;
-            whole[1] = body.centerY_;
-            whole[2] = body.centerZ_;
-            whole[3] = body.boundRadius_;
-            wholeEnd = static_cast<std::uint32_t>(body.size());
+            whole = {body.centerX_, body.centerY_, body.centerZ_, body.boundRadius_,
+                     static_cast<std::uint32_t>(body.size())};
         }
         BodyGroups(const BodyGroups &) = delete;
         BodyGroups &operator=(const BodyGroups &) = delete;
 
-        std::size_t begin(std::size_t g) const { return g == 0 ? 0 : end[g - 1]; }
+        std::size_t begin(std::size_t g) const { return g == 0 ? 0 : group[g - 1].end; }
+        std::size_t end(std::size_t g) const { return group[g].end; }
 
         /** True if the sphere of group \e g overlaps the sphere (\e sx, \e sy, \e sz, \e sr). */
         bool overlaps(std::size_t g, double sx, double sy, double sz, double sr) const
         {
-            const double dx = x[g] - sx, dy = y[g] - sy, dz = z[g] - sz, rr = r[g] + sr;
+            const ompl_parc::CollisionBody::Group &s = group[g];
+            const double dx = s.x - sx, dy = s.y - sy, dz = s.z - sz, rr = s.radius + sr;
             return dx * dx + dy * dy + dz * dz < rr * rr;
         }
 
-        double whole[4]{};
-        std::uint32_t wholeEnd{0};
-        const double *x{whole}, *y{whole + 1}, *z{whole + 2}, *r{whole + 3};
-        const std::uint32_t *end{&wholeEnd};
+        ompl_parc::CollisionBody::Group whole{};
+        const ompl_parc::CollisionBody::Group *group{&whole};
         std::size_t count{1};
     };
 
@@ -87,9 +80,9 @@ namespace
     bool groupCapsulesCollide(const ompl_parc::CollisionBody &a, const BodyGroups &groupsA, std::size_t ga,
                               const ompl_parc::CollisionBody &b, const BodyGroups &groupsB, std::size_t gb)
     {
-        const std::size_t beginA = groupsA.begin(ga), endA = groupsA.end[ga];
+        const std::size_t beginA = groupsA.begin(ga), endA = groupsA.end(ga);
         const bool spheres = a.spheresOnly_ && b.spheresOnly_;
-        for (std::size_t j = groupsB.begin(gb); j < groupsB.end[gb]; ++j)
+        for (std::size_t j = groupsB.begin(gb); j < groupsB.end(gb); ++j)
         {
             if (!groupsA.overlaps(ga, b.sphereX_[j], b.sphereY_[j], b.sphereZ_[j], b.sphereRadius_[j]))
                 continue;
@@ -112,8 +105,10 @@ namespace
     }
 
     /** bodiesCollide() of bodies of which one at least has group bounds: the groups of each that reach the other
-        body's sphere, then per pair of those whose spheres overlap the capsules (groupCapsulesCollide()). */
-    bool groupedBodiesCollide(const ompl_parc::CollisionBody &a, const ompl_parc::CollisionBody &b)
+        body's sphere, then per pair of those whose spheres overlap the capsules (groupCapsulesCollide()). Kept out
+        of line: inlined, its registers and stack would be set up before bodiesCollide()'s first test, which alone
+        decides most pairs (discs: every pair). */
+    __attribute__((noinline)) bool groupedBodiesCollide(const ompl_parc::CollisionBody &a, const ompl_parc::CollisionBody &b)
     {
         const BodyGroups groupsA(a), groupsB(b);
         constexpr std::size_t CHUNK = 64;
@@ -133,7 +128,8 @@ namespace
                 for (std::size_t k = 0; k < count; ++k)
                 {
                     const std::size_t gb = nearB[k];
-                    if (groupsA.overlaps(ga, groupsB.x[gb], groupsB.y[gb], groupsB.z[gb], groupsB.r[gb]) &&
+                    const ompl_parc::CollisionBody::Group &sphereB = groupsB.group[gb];
+                    if (groupsA.overlaps(ga, sphereB.x, sphereB.y, sphereB.z, sphereB.radius) &&
                         groupCapsulesCollide(a, groupsA, ga, b, groupsB, gb))
                         return true;
                 }

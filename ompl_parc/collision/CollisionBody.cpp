@@ -28,7 +28,7 @@ void ompl_parc::CollisionBody::clear()
     spheresOnly_ = true;
     boxesCurrent_ = false;
     groupsCurrent_ = false;
-    groupEnd_.clear();
+    groups_.clear();
 }
 
 void ompl_parc::CollisionBody::addCapsule(double ax, double ay, double az, double bx, double by, double bz,
@@ -44,7 +44,7 @@ void ompl_parc::CollisionBody::addCapsule(double ax, double ay, double az, doubl
     spheresOnly_ = spheresOnly_ && ax == bx && ay == by && az == bz;
     boxesCurrent_ = false;
     groupsCurrent_ = false;
-    groupEnd_.clear();
+    groups_.clear();
 }
 
 void ompl_parc::CollisionBody::setGroups(const std::uint32_t *ends, std::size_t count)
@@ -54,9 +54,9 @@ void ompl_parc::CollisionBody::setGroups(const std::uint32_t *ends, std::size_t 
         increasing = increasing && ends[k] > (k == 0 ? 0u : ends[k - 1]);
     if (!increasing)
         throw std::invalid_argument("CollisionBody::setGroups: the group ends must increase up to size()");
-    groupEnd_.assign(ends, ends + count);
-    for (auto *v : {&groupX_, &groupY_, &groupZ_, &groupRadius_})
-        v->resize(count);
+    groups_.resize(count);
+    for (std::size_t k = 0; k < count; ++k)
+        groups_[k].end = ends[k];
     groupsCurrent_ = false;
     groupSpheresGiven_ = false;
     boxesCurrent_ = false;
@@ -104,7 +104,7 @@ void ompl_parc::CollisionBody::updateBound()
         sz[i] = 0.5 * (az[i] + bz[i]);
         sr[i] = 0.5 * std::sqrt(dx * dx + dy * dy + dz * dz) + r[i];
     }
-    if (!groupEnd_.empty())
+    if (!groups_.empty())
     {
         updateGroupBounds();
         return;
@@ -147,28 +147,27 @@ void ompl_parc::CollisionBody::updateBound()
 
 void ompl_parc::CollisionBody::updateGroupBounds()
 {
-    const std::size_t groups = groupEnd_.size();
     if (!groupSpheresGiven_)
         computeGroupSpheres();
     // The body's sphere around the group spheres: the centre of their box, the farthest group surface.
-    double lo[3] = {groupX_[0], groupY_[0], groupZ_[0]}, hi[3] = {groupX_[0], groupY_[0], groupZ_[0]};
-    for (std::size_t g = 0; g < groups; ++g)
+    double lo[3] = {groups_[0].x, groups_[0].y, groups_[0].z}, hi[3] = {lo[0], lo[1], lo[2]};
+    for (const Group &g : groups_)
     {
-        lo[0] = std::min(lo[0], groupX_[g] - groupRadius_[g]);
-        hi[0] = std::max(hi[0], groupX_[g] + groupRadius_[g]);
-        lo[1] = std::min(lo[1], groupY_[g] - groupRadius_[g]);
-        hi[1] = std::max(hi[1], groupY_[g] + groupRadius_[g]);
-        lo[2] = std::min(lo[2], groupZ_[g] - groupRadius_[g]);
-        hi[2] = std::max(hi[2], groupZ_[g] + groupRadius_[g]);
+        lo[0] = std::min(lo[0], g.x - g.radius);
+        hi[0] = std::max(hi[0], g.x + g.radius);
+        lo[1] = std::min(lo[1], g.y - g.radius);
+        hi[1] = std::max(hi[1], g.y + g.radius);
+        lo[2] = std::min(lo[2], g.z - g.radius);
+        hi[2] = std::max(hi[2], g.z + g.radius);
     }
     centerX_ = 0.5 * (lo[0] + hi[0]);
     centerY_ = 0.5 * (lo[1] + hi[1]);
     centerZ_ = 0.5 * (lo[2] + hi[2]);
     double radius = 0.;
-    for (std::size_t g = 0; g < groups; ++g)
+    for (const Group &g : groups_)
     {
-        const double dx = groupX_[g] - centerX_, dy = groupY_[g] - centerY_, dz = groupZ_[g] - centerZ_;
-        radius = std::max(radius, std::sqrt(dx * dx + dy * dy + dz * dz) + groupRadius_[g]);
+        const double dx = g.x - centerX_, dy = g.y - centerY_, dz = g.z - centerZ_;
+        radius = std::max(radius, std::sqrt(dx * dx + dy * dy + dz * dz) + g.radius);
     }
     boundRadius_ = radius;
     boxesCurrent_ = false;
@@ -177,14 +176,14 @@ void ompl_parc::CollisionBody::updateGroupBounds()
 
 void ompl_parc::CollisionBody::computeGroupSpheres()
 {
-    const std::size_t groups = groupEnd_.size();
     const double *ax = ax_.data(), *ay = ay_.data(), *az = az_.data();
     const double *bx = bx_.data(), *by = by_.data(), *bz = bz_.data(), *r = radius_.data();
     // Per group, like the body's sphere without groups: the centre of the box around its capsule axes, the
-    // farthest capsule surface from it; padded (see groupRadius_).
-    for (std::size_t g = 0, begin = 0; g < groups; begin = groupEnd_[g], ++g)
+    // farthest capsule surface from it; padded (see Group).
+    std::size_t begin = 0;
+    for (Group &group : groups_)
     {
-        const std::size_t end = groupEnd_[g];
+        const std::size_t end = group.end;
         double lo[3] = {ax[begin], ay[begin], az[begin]}, hi[3] = {ax[begin], ay[begin], az[begin]};
         for (std::size_t i = begin; i < end; ++i)
         {
@@ -207,10 +206,11 @@ void ompl_parc::CollisionBody::computeGroupSpheres()
         }
         // The coordinates' rounding (about 2^-52 of their magnitude per operation) is far below 2^-40 of it.
         const double scale = std::max({std::fabs(cx), std::fabs(cy), std::fabs(cz), std::sqrt(farthest)}) + radius;
-        groupX_[g] = cx;
-        groupY_[g] = cy;
-        groupZ_[g] = cz;
-        groupRadius_[g] = radius + 0x1p-40 * scale;
+        group.x = cx;
+        group.y = cy;
+        group.z = cz;
+        group.radius = radius + 0x1p-40 * scale;
+        begin = end;
     }
 }
 

@@ -39,7 +39,7 @@ namespace ompl_parc
             spheresOnly_ = spheresOnly;
             boxesCurrent_ = false;
             groupsCurrent_ = false;
-            groupEnd_.clear();
+            groups_.clear();
             if (radius_.size() != n)  // inline and cheap when the size is unchanged: the case per timestep
                 resizeArrays(n);
         }
@@ -58,8 +58,8 @@ namespace ompl_parc
         void setGroups(const std::uint32_t *ends, std::size_t count);
 
         /** \brief For kinematics that know each group's bounding sphere (a rigid link's, moved with the link): after
-            setGroups(), write groupX_, groupY_, groupZ_ and groupRadius_ (each sphere containing its capsules with
-            room for the rounding of both) and call this; updateBound() then keeps them instead of computing them
+            setGroups(), write the spheres of groups_ (each containing its capsules with room for the rounding of
+            both) and call this; updateBound() then keeps them instead of computing them
             from the capsules, a pass over every capsule. */
         void keepGroupSpheres() { groupSpheresGiven_ = true; }
 
@@ -82,7 +82,7 @@ namespace ompl_parc
         bool hasGroupBounds() const { return groupsCurrent_; }
 
         /** \brief The number of groups (0: none set). */
-        std::size_t groupCount() const { return groupEnd_.size(); }
+        std::size_t groupCount() const { return groups_.size(); }
 
         /** \brief True for a body of exactly one sphere (a disc): it keeps no capsule boxes. */
         bool isSingleSphere() const { return spheresOnly_ && size() == 1; }
@@ -94,8 +94,14 @@ namespace ompl_parc
         std::size_t size() const { return radius_.size(); }
 
         /** \brief Bounding sphere of all capsules. (The members the pair test reads first come first, so that they
-            share a cache line.) */
+            share a cache line: the sphere, then what tells a single sphere, which two discs need no more than.) */
         double centerX_{0.}, centerY_{0.}, centerZ_{0.}, boundRadius_{0.};
+
+        /** \brief True while every capsule is a sphere: the pair test then skips the segment math. */
+        bool spheresOnly_{true};
+
+        /** \brief Capsule radii (size() of them). */
+        std::vector<double> radius_;
 
         /** \brief The body's box: the union of its capsule boxes (single precision, rounded outwards like them); not
             kept for a body of one sphere (read it with getBox()). */
@@ -110,20 +116,24 @@ namespace ompl_parc
         std::size_t boxStride_{0};
         std::vector<float> boxes_;
 
-        /** \brief True while every capsule is a sphere: the pair test then skips the segment math. */
-        bool spheresOnly_{true};
-
-        /** \brief Capsule end points and radii, one array per coordinate. */
-        std::vector<double> ax_, ay_, az_, bx_, by_, bz_, radius_;
+        /** \brief Capsule end points, one array per coordinate. */
+        std::vector<double> ax_, ay_, az_, bx_, by_, bz_;
 
         /** \brief Bounding sphere of each capsule, one array per coordinate (set by updateBound()). */
         std::vector<double> sphereX_, sphereY_, sphereZ_, sphereRadius_;
 
-        /** \brief Per group (setGroups()), one past its last capsule; and its bounding sphere (set by updateBound(),
-            padded by a small multiple of the coordinates' rounding so that it contains its capsules whatever the
-            rounding of its computation: ruling a pair of groups out never hides a collision of the exact test). */
-        std::vector<std::uint32_t> groupEnd_;
-        std::vector<double> groupX_, groupY_, groupZ_, groupRadius_;
+        /** \brief A group of capsules (setGroups()): its bounding sphere (set by updateBound(), padded by a small
+            multiple of the coordinates' rounding so that it contains its capsules whatever the rounding of its
+            computation: ruling a pair of groups out never hides a collision of the exact test) and one past its
+            last capsule. */
+        struct Group
+        {
+            double x, y, z, radius;
+            std::uint32_t end;
+        };
+
+        /** \brief The groups, read together (one vector: a body without groups, a disc's, stays small). */
+        std::vector<Group> groups_;
 
       private:
         /** \brief Give every per-capsule array \e n entries. */

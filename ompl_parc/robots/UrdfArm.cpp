@@ -844,13 +844,14 @@ void ompl_parc::UrdfArm::computeCapsules(const double *q, CollisionBody &body) c
     {
         const LocalSphere &s = groupSpheres_[g];
         const Eigen::Vector3d c = rotations[s.frame] * s.center + translations[s.frame];
-        body.groupX_[g] = c.x();
-        body.groupY_[g] = c.y();
-        body.groupZ_[g] = c.z();
+        CollisionBody::Group &group = body.groups_[g];
+        group.x = c.x();
+        group.y = c.y();
+        group.z = c.z();
         // The capsules and the centre are moved by the same rotation and translation, each with a few roundings
         // of the coordinates (and the rotation's own, from the joint products, far below 2^-40 relative): the pad
         // covers both many times over.
-        body.groupRadius_[g] = s.radius + 0x1p-36 * (s.radius + s.center.norm() + c.cwiseAbs().maxCoeff());
+        group.radius = s.radius + 0x1p-36 * (s.radius + s.center.norm() + c.cwiseAbs().maxCoeff());
     }
     body.keepGroupSpheres();
 }
