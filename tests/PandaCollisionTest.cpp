@@ -106,8 +106,8 @@ TEST(PandaCollision, SphereModelGroupsGiveTheAnswersOfEveryPair)
     // Two sphere Pandas in the facing layout above: the bodies come with link groups and group bounds; every way
     // of pairing them (groups, boxes, one of each, groups with boxes added) must answer as every sphere pair does.
     const std::string urdf = spherePandaUrdf();
-    const auto a = std::make_shared<UrdfArm>("panda", nullptr, urdf, "panda_link0", "panda_hand",
-                                             Eigen::Isometry3d::Identity());
+    const auto a =
+        std::make_shared<UrdfArm>("panda", nullptr, urdf, "panda_link0", "panda_hand", Eigen::Isometry3d::Identity());
     const auto b = std::make_shared<UrdfArm>("panda", nullptr, urdf, "panda_link0", "panda_hand",
                                              UrdfArm::pose(0.6, 0., 1.2, M_PI, 0., M_PI));
     std::mt19937 rng(12);
@@ -146,8 +146,9 @@ TEST(PandaCollision, SphereModelGroupsGiveTheAnswersOfEveryPair)
         hits += pairwise ? 1 : 0;
         const CollisionBody plainA = withoutGroups(bodyA), plainB = withoutGroups(bodyB);
         ASSERT_EQ(plainA.groupCount(), 0u);
-        for (const bool answer : {bodiesCollide(bodyA, bodyB), bodiesCollide(bodyB, bodyA), bodiesCollide(plainA, plainB),
-                                  bodiesCollide(bodyA, plainB), bodiesCollide(plainA, bodyB)})
+        for (const bool answer :
+             {bodiesCollide(bodyA, bodyB), bodiesCollide(bodyB, bodyA), bodiesCollide(plainA, plainB),
+              bodiesCollide(bodyA, plainB), bodiesCollide(plainA, bodyB)})
             disagreements += answer != pairwise ? 1 : 0;
         bodyA.updateBoxes();  // as the environment test does: groups and boxes, either path
         disagreements += bodiesCollide(bodyA, plainB) != pairwise ? 1 : 0;

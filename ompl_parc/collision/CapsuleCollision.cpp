@@ -108,7 +108,8 @@ namespace
         body's sphere, then per pair of those whose spheres overlap the capsules (groupCapsulesCollide()). Kept out
         of line: inlined, its registers and stack would be set up before bodiesCollide()'s first test, which alone
         decides most pairs (discs: every pair). */
-    __attribute__((noinline)) bool groupedBodiesCollide(const ompl_parc::CollisionBody &a, const ompl_parc::CollisionBody &b)
+    __attribute__((noinline)) bool groupedBodiesCollide(const ompl_parc::CollisionBody &a,
+                                                        const ompl_parc::CollisionBody &b)
     {
         const BodyGroups groupsA(a), groupsB(b);
         constexpr std::size_t CHUNK = 64;

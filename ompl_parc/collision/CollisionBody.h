@@ -59,8 +59,8 @@ namespace ompl_parc
 
         /** \brief For kinematics that know each group's bounding sphere (a rigid link's, moved with the link): after
             setGroups(), write the spheres of groups_ (each containing its capsules with room for the rounding of
-            both) and call this; updateBound() then keeps them instead of computing them
-            from the capsules, a pass over every capsule. */
+            both) and call this; updateBound() then keeps them instead of computing them from the capsules, a pass
+            over every capsule. */
         void keepGroupSpheres() { groupSpheresGiven_ = true; }
 
         /** \brief Recompute the bounding spheres (of the body and of each capsule) and the boxes (updateBoxes());
