@@ -100,6 +100,12 @@ namespace ompl_parc
         /** \brief True while every capsule is a sphere: the pair test then skips the segment math. */
         bool spheresOnly_{true};
 
+      private:
+        /** \brief See hasBoxes(), hasGroupBounds() and keepGroupSpheres() (beside spheresOnly_: resize() writes all
+            four, once per body and timestep). */
+        bool boxesCurrent_{false}, groupsCurrent_{false}, groupSpheresGiven_{false};
+
+      public:
         /** \brief Capsule radii (size() of them). */
         std::vector<double> radius_;
 
@@ -144,15 +150,6 @@ namespace ompl_parc
 
         /** \brief The group spheres from the capsules (where the kinematics gave none: keepGroupSpheres()). */
         void computeGroupSpheres();
-
-        /** \brief See hasBoxes(). */
-        bool boxesCurrent_{false};
-
-        /** \brief See hasGroupBounds(). */
-        bool groupsCurrent_{false};
-
-        /** \brief See keepGroupSpheres(). */
-        bool groupSpheresGiven_{false};
     };
 }  // namespace ompl_parc
 
