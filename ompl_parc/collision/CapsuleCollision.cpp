@@ -97,9 +97,16 @@ namespace
                 }
                 continue;
             }
+            // A capsule of a mixed body (a sphere model holding a rod): the segment distance only where the two
+            // capsules' spheres overlap (with room for their rounding), as the boxes rule pairs out elsewhere.
+            const double sx = b.sphereX_[j], sy = b.sphereY_[j], sz = b.sphereZ_[j], sr = b.sphereRadius_[j];
             for (std::size_t i = beginA; i < endA; ++i)
-                if (ompl_parc::capsulesCollide(a, i, b, j))
+            {
+                const double dx = a.sphereX_[i] - sx, dy = a.sphereY_[i] - sy, dz = a.sphereZ_[i] - sz;
+                const double rr = (a.sphereRadius_[i] + sr) * (1. + 0x1p-30) + 0x1p-30;
+                if (dx * dx + dy * dy + dz * dz < rr * rr && ompl_parc::capsulesCollide(a, i, b, j))
                     return true;
+            }
         }
         return false;
     }
