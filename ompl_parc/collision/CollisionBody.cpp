@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace
 {
@@ -26,6 +27,8 @@ void ompl_parc::CollisionBody::clear()
         v->clear();
     spheresOnly_ = true;
     boxesCurrent_ = false;
+    groupsCurrent_ = false;
+    groups_.clear();
 }
 
 void ompl_parc::CollisionBody::addCapsule(double ax, double ay, double az, double bx, double by, double bz,
@@ -39,6 +42,23 @@ void ompl_parc::CollisionBody::addCapsule(double ax, double ay, double az, doubl
     bz_.push_back(bz);
     radius_.push_back(radius);
     spheresOnly_ = spheresOnly_ && ax == bx && ay == by && az == bz;
+    boxesCurrent_ = false;
+    groupsCurrent_ = false;
+    groups_.clear();
+}
+
+void ompl_parc::CollisionBody::setGroups(const std::uint32_t *ends, std::size_t count)
+{
+    bool increasing = count > 0 && ends[count - 1] == size();
+    for (std::size_t k = 0; k < count; ++k)
+        increasing = increasing && ends[k] > (k == 0 ? 0u : ends[k - 1]);
+    if (!increasing)
+        throw std::invalid_argument("CollisionBody::setGroups: the group ends must increase up to size()");
+    groups_.resize(count);
+    for (std::size_t k = 0; k < count; ++k)
+        groups_[k].end = ends[k];
+    groupsCurrent_ = false;
+    groupSpheresGiven_ = false;
     boxesCurrent_ = false;
 }
 
@@ -84,6 +104,11 @@ void ompl_parc::CollisionBody::updateBound()
         sz[i] = 0.5 * (az[i] + bz[i]);
         sr[i] = 0.5 * std::sqrt(dx * dx + dy * dy + dz * dz) + r[i];
     }
+    if (!groups_.empty())
+    {
+        updateGroupBounds();
+        return;
+    }
 
     // Centre of the axis-aligned box around all capsule axes; then the farthest capsule surface, per chunk
     // a map of distances into a small buffer (vectorised square roots) and a scalar maximum of it.
@@ -118,6 +143,75 @@ void ompl_parc::CollisionBody::updateBound()
     centerZ_ = cz;
     boundRadius_ = radius;
     updateBoxes();
+}
+
+void ompl_parc::CollisionBody::updateGroupBounds()
+{
+    if (!groupSpheresGiven_)
+        computeGroupSpheres();
+    // The body's sphere around the group spheres: the centre of their box, the farthest group surface.
+    double lo[3] = {groups_[0].x, groups_[0].y, groups_[0].z}, hi[3] = {lo[0], lo[1], lo[2]};
+    for (const Group &g : groups_)
+    {
+        lo[0] = std::min(lo[0], g.x - g.radius);
+        hi[0] = std::max(hi[0], g.x + g.radius);
+        lo[1] = std::min(lo[1], g.y - g.radius);
+        hi[1] = std::max(hi[1], g.y + g.radius);
+        lo[2] = std::min(lo[2], g.z - g.radius);
+        hi[2] = std::max(hi[2], g.z + g.radius);
+    }
+    centerX_ = 0.5 * (lo[0] + hi[0]);
+    centerY_ = 0.5 * (lo[1] + hi[1]);
+    centerZ_ = 0.5 * (lo[2] + hi[2]);
+    double radius = 0.;
+    for (const Group &g : groups_)
+    {
+        const double dx = g.x - centerX_, dy = g.y - centerY_, dz = g.z - centerZ_;
+        radius = std::max(radius, std::sqrt(dx * dx + dy * dy + dz * dz) + g.radius);
+    }
+    boundRadius_ = radius;
+    boxesCurrent_ = false;
+    groupsCurrent_ = true;
+}
+
+void ompl_parc::CollisionBody::computeGroupSpheres()
+{
+    const double *ax = ax_.data(), *ay = ay_.data(), *az = az_.data();
+    const double *bx = bx_.data(), *by = by_.data(), *bz = bz_.data(), *r = radius_.data();
+    // Per group, like the body's sphere without groups: the centre of the box around its capsule axes, the
+    // farthest capsule surface from it; padded (see Group).
+    std::size_t begin = 0;
+    for (Group &group : groups_)
+    {
+        const std::size_t end = group.end;
+        double lo[3] = {ax[begin], ay[begin], az[begin]}, hi[3] = {ax[begin], ay[begin], az[begin]};
+        for (std::size_t i = begin; i < end; ++i)
+        {
+            lo[0] = std::min(lo[0], std::min(ax[i], bx[i]));
+            hi[0] = std::max(hi[0], std::max(ax[i], bx[i]));
+            lo[1] = std::min(lo[1], std::min(ay[i], by[i]));
+            hi[1] = std::max(hi[1], std::max(ay[i], by[i]));
+            lo[2] = std::min(lo[2], std::min(az[i], bz[i]));
+            hi[2] = std::max(hi[2], std::max(az[i], bz[i]));
+        }
+        const double cx = 0.5 * (lo[0] + hi[0]), cy = 0.5 * (lo[1] + hi[1]), cz = 0.5 * (lo[2] + hi[2]);
+        double farthest = 0., radius = 0.;
+        for (std::size_t i = begin; i < end; ++i)
+        {
+            const double dax = ax[i] - cx, day = ay[i] - cy, daz = az[i] - cz;
+            const double dbx = bx[i] - cx, dby = by[i] - cy, dbz = bz[i] - cz;
+            const double far = std::max(dax * dax + day * day + daz * daz, dbx * dbx + dby * dby + dbz * dbz);
+            farthest = std::max(farthest, far);
+            radius = std::max(radius, std::sqrt(far) + r[i]);
+        }
+        // The coordinates' rounding (about 2^-52 of their magnitude per operation) is far below 2^-40 of it.
+        const double scale = std::max({std::fabs(cx), std::fabs(cy), std::fabs(cz), std::sqrt(farthest)}) + radius;
+        group.x = cx;
+        group.y = cy;
+        group.z = cz;
+        group.radius = radius + 0x1p-40 * scale;
+        begin = end;
+    }
 }
 
 void ompl_parc::CollisionBody::updateBoxes()

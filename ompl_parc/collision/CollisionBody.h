@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace ompl_parc
@@ -15,7 +16,13 @@ namespace ompl_parc
         updateBound() adds what the tests rule pairs out by: a bounding sphere around the whole body, one
         around each capsule (for self-collision), and each capsule's box in single precision rounded outwards
         (boxes_: the broad phase of the robot-robot and robot-environment tests), so that the exact distances
-        in double precision run only for the few pairs that could touch. */
+        in double precision run only for the few pairs that could touch.
+
+        A body of many small capsules (a sphere model of an arm: several spheres per link) is better told its
+        groups (setGroups(): a link's capsules): updateBound() then bounds each group by a sphere and leaves the
+        capsule boxes out, since for such a body they cost more than the pair test they save. The robot-robot
+        test rules group pairs out by their spheres and tests the capsules of the few close ones; readers of the
+        boxes (the environment test) call updateBoxes() first where hasBoxes() is false. */
     class CollisionBody
     {
       public:
@@ -31,6 +38,8 @@ namespace ompl_parc
         {
             spheresOnly_ = spheresOnly;
             boxesCurrent_ = false;
+            groupsCurrent_ = false;
+            groups_.clear();
             if (radius_.size() != n)  // inline and cheap when the size is unchanged: the case per timestep
                 resizeArrays(n);
         }
@@ -42,8 +51,21 @@ namespace ompl_parc
             are unions of such boxes). */
         void expandBox(std::array<double, 3> &lo, std::array<double, 3> &hi) const;
 
+        /** \brief Split the capsules into \e count consecutive groups, group k ending before capsule \e ends[k]
+            (increasing, the last one size()): the capsules of one link, say. Call after the capsules are written
+            (clear(), resize() and addCapsule() drop the groups); throws std::invalid_argument if the ends do not
+            cover the body. */
+        void setGroups(const std::uint32_t *ends, std::size_t count);
+
+        /** \brief For kinematics that know each group's bounding sphere (a rigid link's, moved with the link): after
+            setGroups(), write the spheres of groups_ (each containing its capsules with room for the rounding of
+            both) and call this; updateBound() then keeps them instead of computing them from the capsules, a pass
+            over every capsule. */
+        void keepGroupSpheres() { groupSpheresGiven_ = true; }
+
         /** \brief Recompute the bounding spheres (of the body and of each capsule) and the boxes (updateBoxes());
-            call after the last addCapsule(). */
+            call after the last addCapsule(). A body with groups (setGroups()) gets its group spheres instead of
+            the boxes (hasGroupBounds()). */
         void updateBound();
 
         /** \brief Recompute the single-precision capsule boxes and the body's box from the capsules (updateBound()
@@ -55,6 +77,13 @@ namespace ompl_parc
         /** \brief True once updateBoxes() (or updateBound()) ran after the last clear(), addCapsule() or resize(). */
         bool hasBoxes() const { return boxesCurrent_; }
 
+        /** \brief True once updateBound() computed the group spheres of a body with groups (setGroups()), after the
+            last change: bodiesCollide() then tests it group by group, without boxes. */
+        bool hasGroupBounds() const { return groupsCurrent_; }
+
+        /** \brief The number of groups (0: none set). */
+        std::size_t groupCount() const { return groups_.size(); }
+
         /** \brief True for a body of exactly one sphere (a disc): it keeps no capsule boxes. */
         bool isSingleSphere() const { return spheresOnly_ && size() == 1; }
 
@@ -65,8 +94,20 @@ namespace ompl_parc
         std::size_t size() const { return radius_.size(); }
 
         /** \brief Bounding sphere of all capsules. (The members the pair test reads first come first, so that they
-            share a cache line.) */
+            share a cache line: the sphere, then what tells a single sphere, which two discs need no more than.) */
         double centerX_{0.}, centerY_{0.}, centerZ_{0.}, boundRadius_{0.};
+
+        /** \brief True while every capsule is a sphere: the pair test then skips the segment math. */
+        bool spheresOnly_{true};
+
+      private:
+        /** \brief See hasBoxes(), hasGroupBounds() and keepGroupSpheres() (beside spheresOnly_: resize() writes all
+            four, once per body and timestep). */
+        bool boxesCurrent_{false}, groupsCurrent_{false}, groupSpheresGiven_{false};
+
+      public:
+        /** \brief Capsule radii (size() of them). */
+        std::vector<double> radius_;
 
         /** \brief The body's box: the union of its capsule boxes (single precision, rounded outwards like them); not
             kept for a body of one sphere (read it with getBox()). */
@@ -81,21 +122,34 @@ namespace ompl_parc
         std::size_t boxStride_{0};
         std::vector<float> boxes_;
 
-        /** \brief True while every capsule is a sphere: the pair test then skips the segment math. */
-        bool spheresOnly_{true};
-
-        /** \brief Capsule end points and radii, one array per coordinate. */
-        std::vector<double> ax_, ay_, az_, bx_, by_, bz_, radius_;
+        /** \brief Capsule end points, one array per coordinate. */
+        std::vector<double> ax_, ay_, az_, bx_, by_, bz_;
 
         /** \brief Bounding sphere of each capsule, one array per coordinate (set by updateBound()). */
         std::vector<double> sphereX_, sphereY_, sphereZ_, sphereRadius_;
+
+        /** \brief A group of capsules (setGroups()): its bounding sphere (set by updateBound(), padded by a small
+            multiple of the coordinates' rounding so that it contains its capsules whatever the rounding of its
+            computation: ruling a pair of groups out never hides a collision of the exact test) and one past its
+            last capsule. */
+        struct Group
+        {
+            double x, y, z, radius;
+            std::uint32_t end;
+        };
+
+        /** \brief The groups, read together (one vector: a body without groups, a disc's, stays small). */
+        std::vector<Group> groups_;
 
       private:
         /** \brief Give every per-capsule array \e n entries. */
         void resizeArrays(std::size_t n);
 
-        /** \brief See hasBoxes(). */
-        bool boxesCurrent_{false};
+        /** \brief The group spheres and, from them, the body's sphere (updateBound() of a body with groups). */
+        void updateGroupBounds();
+
+        /** \brief The group spheres from the capsules (where the kinematics gave none: keepGroupSpheres()). */
+        void computeGroupSpheres();
     };
 }  // namespace ompl_parc
 

@@ -82,6 +82,8 @@ ompl_parc::Robot::Validity ompl_parc::Robot::checkValidity(const double *q, Coll
     computeBody(q, body);
     if (selfCollides(body))
         return Validity::SELF_COLLISION;
+    if (!body.hasBoxes())
+        body.updateBoxes();  // a body with group bounds has none yet: the environment test reads them
     if (environment_->collides(body))
         return Validity::ENVIRONMENT_COLLISION;
     return Validity::VALID;

@@ -657,6 +657,27 @@ ompl_parc::UrdfArm::UrdfArm(std::string name, EnvironmentPtr environment, Chain 
         capsules_.push_back({p.frame, toAligned * (s.pose * (-half)), toAligned * (s.pose * half), radius});
     }
     spheresOnly_ = std::all_of(capsules_.begin(), capsules_.end(), [](const LocalCapsule &c) { return c.a == c.b; });
+    // Groups pay where a link carries several capsules (on average at least GROUPED): a pair test then rules
+    // links out by their spheres, and the bounds skip the capsule boxes. A capsule per link or two (our Panda)
+    // stays with the boxes.
+    constexpr std::size_t GROUPED = 3;
+    for (std::size_t i = 1; i <= capsules_.size(); ++i)
+        if (i == capsules_.size() || capsules_[i].frame != capsules_[i - 1].frame)
+            groupEnds_.push_back(static_cast<std::uint32_t>(i));
+    if (capsules_.size() < GROUPED * groupEnds_.size())
+        groupEnds_.clear();
+    for (std::size_t g = 0, begin = 0; g < groupEnds_.size(); begin = groupEnds_[g], ++g)
+    {
+        Eigen::AlignedBox3d box;
+        for (std::size_t i = begin; i < groupEnds_[g]; ++i)
+            box.extend(capsules_[i].a).extend(capsules_[i].b);
+        LocalSphere sphere{capsules_[begin].frame, box.center(), 0.};
+        for (std::size_t i = begin; i < groupEnds_[g]; ++i)
+            sphere.radius = std::max(sphere.radius, std::max((capsules_[i].a - sphere.center).norm(),
+                                                             (capsules_[i].b - sphere.center).norm()) +
+                                                        capsules_[i].radius);
+        groupSpheres_.push_back(sphere);
+    }
     std::vector<double> zero(getDimension());
     for (unsigned int k = 0; k < getDimension(); ++k)
         zero[k] = std::clamp(0., getBounds().low[k], getBounds().high[k]);
@@ -816,6 +837,23 @@ void ompl_parc::UrdfArm::computeCapsules(const double *q, CollisionBody &body) c
         body.bz_[i] = b.z();
         body.radius_[i] = c.radius;
     }
+    if (groupEnds_.empty())
+        return;
+    body.setGroups(groupEnds_.data(), groupEnds_.size());
+    for (std::size_t g = 0; g < groupSpheres_.size(); ++g)
+    {
+        const LocalSphere &s = groupSpheres_[g];
+        const Eigen::Vector3d c = rotations[s.frame] * s.center + translations[s.frame];
+        CollisionBody::Group &group = body.groups_[g];
+        group.x = c.x();
+        group.y = c.y();
+        group.z = c.z();
+        // The capsules and the centre are moved by the same rotation and translation, each with a few roundings
+        // of the coordinates (and the rotation's own, from the joint products, far below 2^-40 relative): the pad
+        // covers both many times over.
+        group.radius = s.radius + 0x1p-36 * (s.radius + s.center.norm() + c.cwiseAbs().maxCoeff());
+    }
+    body.keepGroupSpheres();
 }
 
 bool ompl_parc::UrdfArm::solvePositionIk(const Eigen::Vector3d &target, std::mt19937 &rng, std::vector<double> &q,

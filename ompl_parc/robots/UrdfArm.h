@@ -9,6 +9,7 @@
 
 #include <Eigen/Geometry>
 
+#include <cstdint>
 #include <memory>
 #include <random>
 #include <set>
@@ -234,6 +235,19 @@ namespace ompl_parc
         /** \brief The primitives' capsules, in their link's aligned frame; whether all are spheres. */
         std::vector<LocalCapsule> capsules_;
         bool spheresOnly_{false};
+        /** \brief The ends of the runs of capsules of one frame, given to the bodies as their groups
+            (CollisionBody::setGroups()) where the links carry several capsules each (a sphere model); empty
+            otherwise. */
+        std::vector<std::uint32_t> groupEnds_;
+        /** \brief Per group, the sphere around its capsules in their frame's aligned frame: moved with the frame, it
+            is the group's sphere (CollisionBody::keepGroupSpheres()) without a pass over the capsules. */
+        struct LocalSphere
+        {
+            std::size_t frame;
+            Eigen::Vector3d center;
+            double radius;
+        };
+        std::vector<LocalSphere> groupSpheres_;
         /** \brief The same checks, several configurations per call. */
         std::unique_ptr<UrdfArmLanes> lanes_;
     };
