@@ -11,6 +11,27 @@
 
 namespace
 {
+    /** The centre (\e cx, \e cy, \e cz) of the axis-aligned box around the axes of capsules [\e begin, \e end)
+        (\e end > \e begin), whose end points are (ax, ay, az) and (bx, by, bz): where a bounding sphere is centred. */
+    inline void axisBoxCentre(const double *ax, const double *ay, const double *az, const double *bx,
+                              const double *by, const double *bz, std::size_t begin, std::size_t end, double &cx,
+                              double &cy, double &cz)
+    {
+        double lo[3] = {ax[begin], ay[begin], az[begin]}, hi[3] = {ax[begin], ay[begin], az[begin]};
+        for (std::size_t i = begin; i < end; ++i)
+        {
+            lo[0] = std::min(lo[0], std::min(ax[i], bx[i]));
+            hi[0] = std::max(hi[0], std::max(ax[i], bx[i]));
+            lo[1] = std::min(lo[1], std::min(ay[i], by[i]));
+            hi[1] = std::max(hi[1], std::max(ay[i], by[i]));
+            lo[2] = std::min(lo[2], std::min(az[i], bz[i]));
+            hi[2] = std::max(hi[2], std::max(az[i], bz[i]));
+        }
+        cx = 0.5 * (lo[0] + hi[0]);
+        cy = 0.5 * (lo[1] + hi[1]);
+        cz = 0.5 * (lo[2] + hi[2]);
+    }
+
     /** The single-precision bounds, rounded outwards, of the interval from min(a, b) - r to max(a, b) + r along
         one axis: a capsule's box (a sphere's when a == b). Inline, so the loop over capsules vectorises. */
     inline void roundedInterval(double a, double b, double r, float &lo, float &hi)
@@ -112,17 +133,8 @@ void ompl_parc::CollisionBody::updateBound()
 
     // Centre of the axis-aligned box around all capsule axes; then the farthest capsule surface, per chunk
     // a map of distances into a small buffer (vectorised square roots) and a scalar maximum of it.
-    double lo[3] = {ax[0], ay[0], az[0]}, hi[3] = {ax[0], ay[0], az[0]};
-    for (std::size_t i = 0; i < n; ++i)
-    {
-        lo[0] = std::min(lo[0], std::min(ax[i], bx[i]));
-        hi[0] = std::max(hi[0], std::max(ax[i], bx[i]));
-        lo[1] = std::min(lo[1], std::min(ay[i], by[i]));
-        hi[1] = std::max(hi[1], std::max(ay[i], by[i]));
-        lo[2] = std::min(lo[2], std::min(az[i], bz[i]));
-        hi[2] = std::max(hi[2], std::max(az[i], bz[i]));
-    }
-    const double cx = 0.5 * (lo[0] + hi[0]), cy = 0.5 * (lo[1] + hi[1]), cz = 0.5 * (lo[2] + hi[2]);
+    double cx, cy, cz;
+    axisBoxCentre(ax, ay, az, bx, by, bz, 0, n, cx, cy, cz);
     constexpr std::size_t CHUNK = 16;
     double far[CHUNK], radius = 0.;
     for (std::size_t base = 0; base < n; base += CHUNK)
@@ -184,17 +196,8 @@ void ompl_parc::CollisionBody::computeGroupSpheres()
     for (Group &group : groups_)
     {
         const std::size_t end = group.end;
-        double lo[3] = {ax[begin], ay[begin], az[begin]}, hi[3] = {ax[begin], ay[begin], az[begin]};
-        for (std::size_t i = begin; i < end; ++i)
-        {
-            lo[0] = std::min(lo[0], std::min(ax[i], bx[i]));
-            hi[0] = std::max(hi[0], std::max(ax[i], bx[i]));
-            lo[1] = std::min(lo[1], std::min(ay[i], by[i]));
-            hi[1] = std::max(hi[1], std::max(ay[i], by[i]));
-            lo[2] = std::min(lo[2], std::min(az[i], bz[i]));
-            hi[2] = std::max(hi[2], std::max(az[i], bz[i]));
-        }
-        const double cx = 0.5 * (lo[0] + hi[0]), cy = 0.5 * (lo[1] + hi[1]), cz = 0.5 * (lo[2] + hi[2]);
+        double cx, cy, cz;
+        axisBoxCentre(ax, ay, az, bx, by, bz, begin, end, cx, cy, cz);
         double farthest = 0., radius = 0.;
         for (std::size_t i = begin; i < end; ++i)
         {
