@@ -21,10 +21,11 @@ namespace ompl_parc
         overlap the other body's box (CollisionBody::boxes_, single precision rounded outwards: never tighter
         than the capsule); per pair of those, their boxes, and the exact segment distance in double precision
         only where the two boxes overlap. Bodies with group bounds (CollisionBody::setGroups()) are tested by
-        their groups instead: the group spheres of each that reach the other body, per pair of those that overlap
-        each capsule of one group whose sphere reaches the other group, and the exact distance. The boxes and
-        spheres only rule pairs out that cannot touch, so the answer is that of testing every pair. Both bodies
-        need current bounds (updateBound()): a stale one is refused with std::logic_error. */
+        their groups instead: the group spheres of each that reach the other body; per pair of those that overlap,
+        each capsule of one group whose sphere reaches the other group against that group's capsules, by the
+        distance of the centres for two spheres, else by the exact distance where the two capsules' spheres
+        overlap. The boxes and spheres only rule pairs out that cannot touch, so the answer is that of testing
+        every pair. Both bodies need current bounds (updateBound()): a stale one is refused with std::logic_error. */
     bool bodiesCollide(const CollisionBody &a, const CollisionBody &b);
 }  // namespace ompl_parc
 
