@@ -94,7 +94,6 @@ ompl_parc::UrdfArmLanes::UrdfArmLanes(const Eigen::Isometry3d &basePose, unsigne
                 offsetRotations_.push_back(static_cast<float>(offsetRotations[k](row, col)));
             offsetTranslations_.push_back(static_cast<float>(offsetTranslations[k][row]));
         }
-    spheresOnly_ = std::all_of(capsules.begin(), capsules.end(), [](const Capsule &c) { return c.a == c.b; });
     for (const Capsule &c : capsules)
     {
         frame_.push_back(c.frame);
@@ -220,12 +219,6 @@ bool ompl_parc::UrdfArmLanes::anyCollides(const double *configs, std::size_t cou
         const Batch *r = &s.rotations[9 * frame_[i]], *t = &s.translations[3 * frame_[i]];
         Batch *end = &s.ends[6 * i];
         rotate(r, &localA_[3 * i], t, end);
-        if (spheresOnly_)  // both ends the same point, as the second rotate() would give it: copy it
-        {
-            for (int c = 0; c < 3; ++c)
-                s.centers[3 * i + c] = end[3 + c] = end[c];
-            continue;
-        }
         rotate(r, &localB_[3 * i], t, end + 3);
         for (int c = 0; c < 3; ++c)
             s.centers[3 * i + c] = Batch(0.5f) * (end[c] + end[3 + c]);
@@ -250,14 +243,7 @@ bool ompl_parc::UrdfArmLanes::anyCollides(const double *configs, std::size_t cou
             const Batch *ci = &s.centers[3 * i], *cj = &s.centers[3 * j];
             const Batch ex = ci[0] - cj[0], ey = ci[1] - cj[1], ez = ci[2] - cj[2];
             const float near = sphereRadius_[i] + sphereRadius_[j], touch = selfRadius_[i] + selfRadius_[j];
-            const Batch e2 = ex * ex + ey * ey + ez * ez;
-            if (spheresOnly_)  // the segment distance of two points is that of the centres: e2
-            {
-                if (xsimd::any(e2 < Batch(touch * touch)))
-                    return true;
-                continue;
-            }
-            if (xsimd::none(e2 < Batch(near * near)))
+            if (xsimd::none(ex * ex + ey * ey + ez * ez < Batch(near * near)))
                 continue;
             const Batch *a = &s.ends[6 * i], *b = &s.ends[6 * j];
             const Batch d2 =
@@ -284,10 +270,7 @@ bool ompl_parc::UrdfArmLanes::anyCollides(const double *configs, std::size_t cou
     for (std::size_t i = 0; i < capsules; ++i)
     {
         toWorld(&s.ends[6 * i]);
-        if (spheresOnly_)
-            std::copy(&s.ends[6 * i], &s.ends[6 * i + 3], &s.ends[6 * i + 3]);
-        else
-            toWorld(&s.ends[6 * i + 3]);
+        toWorld(&s.ends[6 * i + 3]);
     }
     for (std::size_t f = 0; f < frames; ++f)
         if (hasCapsules(f))

@@ -104,9 +104,6 @@ namespace ompl_parc
         std::vector<std::size_t> byFrame_, frameBegin_;
         bool hasCapsules(std::size_t f) const { return frameBegin_[f] != frameBegin_[f + 1]; }
         double selfInflation_, inflation_;
-        /** \brief True if every capsule is a sphere (a sphere model): each end point is computed once, and a self
-            pair's distance is that of the centres, without the segment math. */
-        bool spheresOnly_{false};
     };
 }  // namespace ompl_parc
 
