@@ -666,17 +666,19 @@ ompl_parc::UrdfArm::UrdfArm(std::string name, EnvironmentPtr environment, Chain 
             groupEnds_.push_back(static_cast<std::uint32_t>(i));
     if (capsules_.size() < GROUPED * groupEnds_.size())
         groupEnds_.clear();
-    for (std::size_t g = 0, begin = 0; g < groupEnds_.size(); begin = groupEnds_[g], ++g)
+    if (!groupEnds_.empty())  // each group's sphere in its frame: a body's group sphere of the local capsules
     {
-        Eigen::AlignedBox3d box;
-        for (std::size_t i = begin; i < groupEnds_[g]; ++i)
-            box.extend(capsules_[i].a).extend(capsules_[i].b);
-        LocalSphere sphere{capsules_[begin].frame, box.center(), 0.};
-        for (std::size_t i = begin; i < groupEnds_[g]; ++i)
-            sphere.radius = std::max(sphere.radius, std::max((capsules_[i].a - sphere.center).norm(),
-                                                             (capsules_[i].b - sphere.center).norm()) +
-                                                        capsules_[i].radius);
-        groupSpheres_.push_back(sphere);
+        CollisionBody local;
+        for (const LocalCapsule &c : capsules_)
+            local.addCapsule(c.a.x(), c.a.y(), c.a.z(), c.b.x(), c.b.y(), c.b.z(), c.radius);
+        local.setGroups(groupEnds_.data(), groupEnds_.size());
+        local.updateBound();
+        for (std::size_t g = 0, begin = 0; g < groupEnds_.size(); begin = groupEnds_[g], ++g)
+        {
+            const CollisionBody::Group &group = local.groups_[g];
+            groupSpheres_.push_back(
+                {capsules_[begin].frame, Eigen::Vector3d(group.x, group.y, group.z), group.radius});
+        }
     }
     std::vector<double> zero(getDimension());
     for (unsigned int k = 0; k < getDimension(); ++k)
