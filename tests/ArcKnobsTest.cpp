@@ -35,8 +35,8 @@ namespace
     };
 
     // ArcSettings::profile() before the table: planar and panda set window, growth (exponential, step 1.05),
-    // endpoint step 10, margin 1, min range 0.5 and cap 50000, panda also min window growth 1.25, composite
-    // solvers, sequential and shortened patches; mobile kept the defaults.
+    // endpoint step 10, margin 1, min range 0.5 and cap 50000 (panda: 12500), panda also min window growth 2.5,
+    // composite solvers, sequential and shortened patches; mobile kept the defaults.
     // clang-format off
     //                               window growth                            step  minGrowth endpoint margin range
     //                               cap    solvers                           simplify straight shorten mapf sequential
@@ -44,8 +44,8 @@ namespace
                                      5000,  ArcSettings::Solvers::COMPOSITE_FIRST, true, true,  false,  true, false};
     const KnobValues PLANAR_KNOBS{   100,   ArcSettings::Growth::EXPONENTIAL, 1.05, 1.,       10,      1.,    0.5,
                                      50000, ArcSettings::Solvers::COMPOSITE_FIRST, true, true,  false,  true, false};
-    const KnobValues PANDA_KNOBS{    20,    ArcSettings::Growth::EXPONENTIAL, 1.05, 1.25,     10,      1.,    0.5,
-                                     50000, ArcSettings::Solvers::COMPOSITE,       true, true,  true,   true, true};
+    const KnobValues PANDA_KNOBS{    20,    ArcSettings::Growth::EXPONENTIAL, 1.05, 2.5,      10,      1.,    0.5,
+                                     12500, ArcSettings::Solvers::COMPOSITE,       true, true,  true,   true, true};
     // clang-format on
 
     void expectKnobValues(const ArcSettings &s, const KnobValues &v)

@@ -378,7 +378,9 @@ TEST(ArcSettings, GrowthSchedulesAndProfiles)
     EXPECT_EQ(planar.halfWidth(0), 100u);
     EXPECT_EQ(planar.halfWidth(1), 102u);  // 100 + ceil(1.05)
     EXPECT_EQ(planar.halfWidth(5), 117u);  // 100 + ceil(1.05 * 16)
-    EXPECT_EQ(ArcSettings::profile("panda").minWindowGrowth, 1.25);  // docs/results.md: Panda cells and Panda Cage 16
+    // docs/results-arm-tail.md: Panda cells and Panda Cage 16
+    EXPECT_EQ(ArcSettings::profile("panda").minWindowGrowth, 2.5);
+    EXPECT_EQ(ArcSettings::profile("panda").sampleCap, 12500u);
     EXPECT_EQ(ArcSettings::profile("panda").solvers, ArcSettings::Solvers::COMPOSITE);
     EXPECT_TRUE(ArcSettings::profile("panda").sequential);  // docs/results.md: Panda cells, arms moved one at a time
     EXPECT_FALSE(ArcSettings::profile("planar").sequential);

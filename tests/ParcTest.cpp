@@ -443,7 +443,7 @@ INSTANTIATE_TEST_SUITE_P(Scenarios, OrParcSolves,
 TEST(OrParc, OddInstancesRepairEagerlyUnlessDiversifyIsOff)
 {
     // A portfolio: the odd instances get a quarter of the sample cap and twice the window growth (the panda profile's
-    // 50000 and 1.25 here), the even ones the prototype's settings; with diversify off, every instance is the
+    // 12500 and 2.5 here), the even ones the prototype's settings; with diversify off, every instance is the
     // prototype, as in the paper's OR.
     const auto problem = scenarios::createPandaCage(4);
     ORPARC orparc(problem.getSpaceInformation());
@@ -451,16 +451,16 @@ TEST(OrParc, OddInstancesRepairEagerlyUnlessDiversifyIsOff)
     orparc.setProblemDefinition(problem.createProblemDefinition());
     const auto even = orparc.createInstance(0, 9), odd = orparc.createInstance(1, 9),
                third = orparc.createInstance(3, 9);
-    EXPECT_EQ(even->getSampleCap(), 50000u);
-    EXPECT_DOUBLE_EQ(even->getMinWindowGrowth(), 1.25);
+    EXPECT_EQ(even->getSampleCap(), 12500u);
+    EXPECT_DOUBLE_EQ(even->getMinWindowGrowth(), 2.5);
     for (const auto &eager : {odd, third})
     {
-        EXPECT_EQ(eager->getSampleCap(), 12500u);
-        EXPECT_DOUBLE_EQ(eager->getMinWindowGrowth(), 2.5);
+        EXPECT_EQ(eager->getSampleCap(), 3125u);
+        EXPECT_DOUBLE_EQ(eager->getMinWindowGrowth(), 4.);
         EXPECT_EQ(eager->getWindow(), even->getWindow());  // the rest is the prototype's
     }
     ASSERT_TRUE(orparc.params().setParam("diversify", "0"));
-    EXPECT_EQ(orparc.createInstance(1, 9)->getSampleCap(), 50000u);
+    EXPECT_EQ(orparc.createInstance(1, 9)->getSampleCap(), 12500u);
     // The eager schedule's limits: no cap stays none, the growth stops at the parameter's top.
     ArcSettings settings;
     settings.sampleCap = 0;

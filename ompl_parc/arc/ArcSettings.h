@@ -60,15 +60,15 @@ namespace ompl_parc
 
         /** \brief The authors' tuned values: "mobile" (w 200, linear +200, margin 2, min range 2, cap 5000),
             "planar" (w 100, exponential 1.05, endpoint step 10, margin 1, min range 0.5, cap 50000),
-            "panda" (as planar with w 20; ours: min window growth 1.25, composite RRT-Connect only, sequential,
-            patches shortened). Throws
+            "panda" (as planar with w 20; ours: cap 12500, min window growth 2.5, composite RRT-Connect only,
+            sequential, patches shortened). Throws
             ompl::Exception for another name. */
         static ArcSettings profile(const std::string &name);
 
         /** \brief These settings with an eager repair schedule: a quarter of the sample cap (at least 1000; none stays
             none) and twice the minimum window growth (at most 4), so fewer samples on each window and fewer windows
             before the team's global problem. For the odd instances of an OR race (ORPARC's \e diversify): on a team
-            of arms that no window can repair (Panda Cage 16 tasks 3 and 4), the default schedule spends seconds on
+            of arms that no window can repair (Panda Cage 16 task 3), the default schedule spends seconds on
             hopeless windows and an eager instance wins; where windows do repair, the default instance does. */
         ArcSettings eager() const;
 
