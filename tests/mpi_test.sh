@@ -12,6 +12,7 @@ set -u
 bin=$1
 mpiexec=$2
 sanitized=${3:-}
+here=$(cd "$(dirname "$0")" && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 failures=0
@@ -82,10 +83,12 @@ fi
 # Ctrl-C on mpirun: ompl_parc_mpi installs no SIGINT handler (its ranks are mpirun's to end), and mpirun ends every
 # rank (Open MPI 4.1: exit 1 about 1 s after the SIGINT, no summary). Checked: it ends within 30 s, not with success,
 # and no rank runs on. python3 gives mpirun a default SIGINT (a background job of this shell starts with it ignored).
+# The problem has no plan (two discs that must swap in a corridor too narrow to pass), so the ranks are still
+# solving when the SIGINT comes, however fast they get.
 python3 -c 'import os, signal, sys
 signal.signal(signal.SIGINT, signal.SIG_DFL)
-os.execv(sys.argv[1], sys.argv[1:])' "$mpiexec" "${flags[@]}" "$bin/ompl_parc_mpi" --scenario panda_cage --robots 16 \
-    --task 3 --time-limit 60 >"$tmp/sigint.out" 2>&1 &
+os.execv(sys.argv[1], sys.argv[1:])' "$mpiexec" "${flags[@]}" "$bin/ompl_parc_mpi" \
+    --scenario-file "$here/data/corridor_swap.json" --time-limit 60 >"$tmp/sigint.out" 2>&1 &
 pid=$!
 sleep 3
 ranks=$(pgrep -P "$pid" | tr '\n' ' ')

@@ -2,13 +2,20 @@
 
 #include "ompl_parc/collision/CapsuleCollision.h"
 #include "ompl_parc/collision/CollidingPairSweep.h"
+#include "ompl_parc/robots/UrdfArmLanes.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
+
+#include <algorithm>
 
 ompl_parc::MultiRobotValidityChecker::MultiRobotValidityChecker(ompl::base::SpaceInformation *si,
                                                                 std::vector<RobotPtr> team)
     : ompl::base::StateValidityChecker(si), team_(std::move(team))
 {
+    for (const RobotPtr &robot : team_)
+        lanes_.push_back(robot->getLanes());
+    if (std::find(lanes_.begin(), lanes_.end(), nullptr) != lanes_.end())
+        lanes_.clear();
 }
 
 bool ompl_parc::MultiRobotValidityChecker::isValid(const ompl::base::State *state) const
@@ -46,6 +53,8 @@ bool ompl_parc::MultiRobotValidityChecker::allValid(const double *configs, std::
     thread_local std::vector<double> own;
     thread_local std::vector<CollisionBody> bodies;
     const std::size_t n = team_.size();
+    if (n >= 2 && !lanes_.empty())
+        return lanesValid(configs, count);
     std::size_t total = 0;
     for (const RobotPtr &robot : team_)
         total += robot->getDimension();
@@ -69,6 +78,59 @@ bool ompl_parc::MultiRobotValidityChecker::allValid(const double *configs, std::
             team_[i]->computeBody(configs + k * total + offset, bodies[i]);
         if (anyPairCollides(bodies))
             return false;
+    }
+    return true;
+}
+
+bool ompl_parc::MultiRobotValidityChecker::lanesValid(const double *configs, std::size_t count) const
+{
+    thread_local std::vector<double> own;
+    thread_local std::vector<UrdfArmLanes::Placed> placed;
+    thread_local CollisionBody bodyI, bodyJ;
+    thread_local std::vector<std::size_t> offsets;
+    const std::size_t n = team_.size(), width = UrdfArmLanes::width();
+    offsets.assign(n + 1, 0);
+    for (std::size_t i = 0; i < n; ++i)
+        offsets[i + 1] = offsets[i] + team_[i]->getDimension();
+    const std::size_t total = offsets[n];
+    placed.resize(n);
+    for (std::size_t first = 0; first < count; first += width)
+    {
+        const std::size_t lanes = std::min(width, count - first);
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            // The robot alone (bounds, then itself and the environment in lanes, which also places it).
+            const Robot &robot = *team_[i];
+            const unsigned int d = robot.getDimension();
+            const auto &bounds = robot.getBounds();
+            own.resize(lanes * d);
+            for (std::size_t l = 0; l < lanes; ++l)
+                std::copy_n(configs + (first + l) * total + offsets[i], d, own.begin() + l * d);
+            for (std::size_t k = 0; k < lanes * d; ++k)
+                if (!(own[k] >= bounds.low[k % d] && own[k] <= bounds.high[k % d]))
+                    return false;
+            if (lanes_[i]->anyCollides(own.data(), lanes, robot.getEnvironment()->getObstacleSet(), &placed[i]))
+                return false;
+        }
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = i + 1; j < n; ++j)
+            {
+                unsigned int touching = 0;
+                const unsigned int near =
+                    UrdfArmLanes::nearLanes(*lanes_[i], placed[i], *lanes_[j], placed[j], touching);
+                if (touching != 0)
+                    return false;
+                for (std::size_t l = 0; l < lanes; ++l)
+                {
+                    if (((near >> l) & 1u) == 0)
+                        continue;
+                    const double *q = configs + (first + l) * total;
+                    team_[i]->computeBody(q + offsets[i], bodyI);
+                    team_[j]->computeBody(q + offsets[j], bodyJ);
+                    if (bodiesCollide(bodyI, bodyJ))
+                        return false;
+                }
+            }
     }
     return true;
 }

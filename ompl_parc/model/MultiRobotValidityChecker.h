@@ -23,8 +23,13 @@ namespace ompl_parc
 
         /** \brief True if all \e count composite configurations \e configs (flat: the robots' values in team
             order, per configuration) are valid: each robot checks its own batch with Robot::allValid() (SIMD
-            lanes where its kind has them), then the robot pairs are tested configuration by configuration. The
-            batch check of the team's RakeMotionValidator. */
+            lanes where its kind has them), then the robot pairs, configuration by configuration. A team whose
+            robots all have lanes (Robot::getLanes(): arms) goes a lane batch at a time instead: each robot alone
+            in lanes, whose kinematics also place it in the world, then each pair compared in single precision
+            (UrdfArmLanes::nearLanes()) and tested exactly, in double precision, only for the configurations the
+            lanes cannot tell: the answer of the exact test of every pair, without the two arms' kinematics in
+            double and their bounds at every configuration, which cost several times the lanes. The batch check
+            of the team's RakeMotionValidator. */
         bool allValid(const double *configs, std::size_t count) const;
 
         /** \brief Robot::sweepValid() of a team of one (the initial stage's single-robot planning); std::nullopt for
@@ -39,7 +44,13 @@ namespace ompl_parc
         /** \brief True if two of the team's \e bodies overlap. */
         bool anyPairCollides(const std::vector<CollisionBody> &bodies) const;
 
+        /** \brief allValid() for a team whose robots all have lanes (lanes_ full): a lane batch at a time, each robot
+            alone (as its Robot::allValid() decides), then the pairs. */
+        bool lanesValid(const double *configs, std::size_t count) const;
+
         std::vector<RobotPtr> team_;
+        /** \brief Each robot's lanes, when every robot of the team has them (else empty). */
+        std::vector<const UrdfArmLanes *> lanes_;
     };
 }  // namespace ompl_parc
 

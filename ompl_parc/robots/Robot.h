@@ -17,6 +17,8 @@
 
 namespace ompl_parc
 {
+    class UrdfArmLanes;
+
     /** \brief One robot of a team: its own configuration space, validity against the static world, and
         the collision body used for robot-robot checks.
 
@@ -89,6 +91,12 @@ namespace ompl_parc
             that can tell at once, without samples (a translating disc sweeps a capsule: DiscRobot); std::nullopt
             for the others, whose motions are checked sample by sample. Stricter than any sampling. */
         virtual std::optional<bool> sweepValid(const double *from, const double *to) const;
+
+        /** \brief The kind's kernel that checks several configurations at once in SIMD lanes, for the team checks
+            that compare two robots a lane batch at a time (MultiRobotValidityChecker::allValid()); null for kinds
+            without one (the default). A kind that has one decides allValid() as it does: the bounds, then
+            UrdfArmLanes::anyCollides(). */
+        virtual const UrdfArmLanes *getLanes() const { return nullptr; }
 
         /** \brief For kinds whose body's bounding box follows from a box of configurations (a translating disc:
             the configuration box grown by the radius): expand [\e boxLo, \e boxHi] to contain the body at every

@@ -101,6 +101,8 @@ namespace ompl_parc
             configurations at a time (single precision, conservative; see UrdfArmLanes). */
         bool allValid(const double *configs, std::size_t count) const override;
 
+        const UrdfArmLanes *getLanes() const override { return lanes_.get(); }
+
         /** \brief A movable joint of the arm: what moves frame k (k >= 1, joint k - 1 of getJoints()) relative
             to its parent frame. Frames 1 .. getChainJointCount() are the chain's, each the parent of the next;
             the frames after them are the child links of mimic joints off the chain. */

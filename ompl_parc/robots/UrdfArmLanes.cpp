@@ -21,6 +21,23 @@ namespace
         ompl_parc::CollisionBody capsule;  // one lane's capsule, in double, for the exact narrow phase
     };
 
+    Scratch &scratch()
+    {
+        thread_local Scratch s;
+        return s;
+    }
+
+    /** The lanes set in \e m, as bits. */
+    unsigned int laneBits(const xsimd::batch_bool<float> &m)
+    {
+        alignas(64) bool set[WIDTH];
+        m.store_aligned(set);
+        unsigned int bits = 0;
+        for (std::size_t l = 0; l < WIDTH; ++l)
+            bits |= set[l] ? 1u << l : 0u;
+        return bits;
+    }
+
     /** True if the capsule with end points \e end (6 batches, world frame) and radius \e radius touches obstacle \e k
         (whose box, grown by the inflation, is \e boxLo..\e boxHi) in one of the first \e count lanes: the box test on
         all lanes, then ObstacleSet's exact test in double precision (through \e body, one capsule) per lane that
@@ -105,7 +122,12 @@ ompl_parc::UrdfArmLanes::UrdfArmLanes(const Eigen::Isometry3d &basePose, unsigne
         selfRadius_.push_back(static_cast<float>(c.radius + selfInflation_));
         sphereRadius_.push_back(static_cast<float>(0.5 * (c.b - c.a).norm() + c.radius + 2. * selfInflation_));
         radius_.push_back(static_cast<float>(c.radius + inflation_));
+        pairRadius_.push_back(static_cast<float>(c.radius + 2. * inflation_));
+        pairCoreRadius_.push_back(static_cast<float>(std::max(0., c.radius - 2. * inflation_)));
     }
+    for (int r = 0; r < 3; ++r)
+        basePosition_[r] = basePose.translation()[r];
+    reach_ = reach + extent;
 
     // Per frame a sphere around its capsules' spheres (the centre of their end points' box), grown by the rounding of
     // its own centre's kinematics (as a capsule's sphere is grown by its own).
@@ -157,10 +179,10 @@ std::size_t ompl_parc::UrdfArmLanes::width()
     return WIDTH;
 }
 
-bool ompl_parc::UrdfArmLanes::anyCollides(const double *configs, std::size_t count, const ObstacleSet &obstacles) const
+void ompl_parc::UrdfArmLanes::computeKinematics(const double *configs, std::size_t count) const
 {
     const std::size_t frames = joints_.size() + 1, capsules = frame_.size();
-    thread_local Scratch s;
+    Scratch &s = scratch();
     s.rotations.resize(9 * frames);
     s.translations.resize(3 * frames);
     s.ends.resize(6 * capsules);
@@ -224,12 +246,47 @@ bool ompl_parc::UrdfArmLanes::anyCollides(const double *configs, std::size_t cou
             s.centers[3 * i + c] = Batch(0.5f) * (end[c] + end[3 + c]);
     }
 
-    // Self-collision: per pair of frames their spheres' clearance, then per pair of capsules theirs, the exact segment
-    // distance only where some lane is close.
     s.frameCenters.resize(3 * frames);
     for (std::size_t f = 0; f < frames; ++f)
         if (hasCapsules(f))
             rotate(&s.rotations[9 * f], &frameCenter_[3 * f], &s.translations[3 * f], &s.frameCenters[3 * f]);
+}
+
+void ompl_parc::UrdfArmLanes::moveScratchToWorld() const
+{
+    const std::size_t frames = joints_.size() + 1, capsules = frame_.size();
+    Scratch &s = scratch();
+    Batch rotation[9], translation[3];
+    for (int e = 0; e < 9; ++e)
+        rotation[e] = Batch(baseRotation_[e]);
+    for (int e = 0; e < 3; ++e)
+        translation[e] = Batch(baseTranslation_[e]);
+    const auto toWorld = [&](Batch *point)
+    {
+        const Batch local[3] = {point[0], point[1], point[2]};
+        for (int row = 0; row < 3; ++row)
+            point[row] = translation[row] + rotation[3 * row] * local[0] + rotation[3 * row + 1] * local[1] +
+                         rotation[3 * row + 2] * local[2];
+    };
+    for (std::size_t i = 0; i < capsules; ++i)
+    {
+        toWorld(&s.ends[6 * i]);
+        toWorld(&s.ends[6 * i + 3]);
+    }
+    for (std::size_t f = 0; f < frames; ++f)
+        if (hasCapsules(f))
+            toWorld(&s.frameCenters[3 * f]);
+}
+
+bool ompl_parc::UrdfArmLanes::anyCollides(const double *configs, std::size_t count, const ObstacleSet &obstacles,
+                                          Placed *placed) const
+{
+    const std::size_t frames = joints_.size() + 1;
+    computeKinematics(configs, count);
+    Scratch &s = scratch();
+
+    // Self-collision: per pair of frames their spheres' clearance, then per pair of capsules theirs, the exact segment
+    // distance only where some lane is close.
     for (const FramePairs &group : framePairs_)
     {
         const Batch *ca = &s.frameCenters[3 * group.a], *cb = &s.frameCenters[3 * group.b];
@@ -255,26 +312,7 @@ bool ompl_parc::UrdfArmLanes::anyCollides(const double *configs, std::size_t cou
 
     // Environment, in the world frame: each capsule's box against each obstacle's box, then the exact test per
     // lane that overlaps.
-    Batch rotation[9], translation[3];
-    for (int e = 0; e < 9; ++e)
-        rotation[e] = Batch(baseRotation_[e]);
-    for (int e = 0; e < 3; ++e)
-        translation[e] = Batch(baseTranslation_[e]);
-    const auto toWorld = [&](Batch *point)
-    {
-        const Batch local[3] = {point[0], point[1], point[2]};
-        for (int row = 0; row < 3; ++row)
-            point[row] = translation[row] + rotation[3 * row] * local[0] + rotation[3 * row + 1] * local[1] +
-                         rotation[3 * row + 2] * local[2];
-    };
-    for (std::size_t i = 0; i < capsules; ++i)
-    {
-        toWorld(&s.ends[6 * i]);
-        toWorld(&s.ends[6 * i + 3]);
-    }
-    for (std::size_t f = 0; f < frames; ++f)
-        if (hasCapsules(f))
-            toWorld(&s.frameCenters[3 * f]);
+    moveScratchToWorld();
     s.capsule.resize(1, false);
     for (std::size_t k = 0; k < obstacles.size(); ++k)
     {
@@ -303,5 +341,120 @@ bool ompl_parc::UrdfArmLanes::anyCollides(const double *configs, std::size_t cou
                     return true;
         }
     }
+    if (placed != nullptr)
+        storePlaced(count, *placed);
     return false;
+}
+
+void ompl_parc::UrdfArmLanes::place(const double *configs, std::size_t count, Placed &placed) const
+{
+    computeKinematics(configs, count);
+    moveScratchToWorld();
+    storePlaced(count, placed);
+}
+
+void ompl_parc::UrdfArmLanes::storePlaced(std::size_t count, Placed &placed) const
+{
+    const std::size_t frames = joints_.size() + 1, capsules = frame_.size();
+    const Scratch &s = scratch();
+    placed.ends.resize(6 * capsules * WIDTH);
+    placed.frameCenters.resize(3 * frames * WIDTH);
+    for (std::size_t e = 0; e < 6 * capsules; ++e)
+        s.ends[e].store_unaligned(&placed.ends[e * WIDTH]);
+    // The arm's box per lane: around its frames' spheres as nearLanes() grows them.
+    Batch lo[3], hi[3];
+    for (int c = 0; c < 3; ++c)
+    {
+        lo[c] = Batch(INFINITY);
+        hi[c] = Batch(-INFINITY);
+    }
+    for (std::size_t f = 0; f < frames; ++f)
+        if (hasCapsules(f))
+        {
+            const Batch reach(pairFrameRadius(f));
+            for (int c = 0; c < 3; ++c)
+            {
+                const Batch &centre = s.frameCenters[3 * f + c];
+                centre.store_unaligned(&placed.frameCenters[(3 * f + c) * WIDTH]);
+                lo[c] = xsimd::min(lo[c], centre - reach);
+                hi[c] = xsimd::max(hi[c], centre + reach);
+            }
+        }
+    placed.box.resize(6 * WIDTH);
+    for (int c = 0; c < 3; ++c)
+    {
+        lo[c].store_unaligned(&placed.box[c * WIDTH]);
+        hi[c].store_unaligned(&placed.box[(3 + c) * WIDTH]);
+    }
+    placed.count = count;
+}
+
+unsigned int ompl_parc::UrdfArmLanes::nearLanes(const UrdfArmLanes &a, const Placed &pa, const UrdfArmLanes &b,
+                                                const Placed &pb, unsigned int &touching)
+{
+    touching = 0;
+    const double bx = a.basePosition_[0] - b.basePosition_[0], by = a.basePosition_[1] - b.basePosition_[1],
+                 bz = a.basePosition_[2] - b.basePosition_[2], reach = a.reach_ + b.reach_;
+    if (bx * bx + by * by + bz * bz > reach * reach * (1. + 1e-9) + 1e-9)
+        return 0;  // apart at every configuration
+    const unsigned int lanes = (1u << std::min(pa.count, pb.count)) - 1u;
+    const auto load = [](const std::vector<float> &rows, std::size_t row, Batch *out, int n)
+    {
+        for (int c = 0; c < n; ++c)
+            out[c] = Batch::load_unaligned(&rows[(row + c) * WIDTH]);
+    };
+    // Frame spheres (pairFrameRadius()) contain the float capsules within the pair test's reach below, and each arm's
+    // box (Placed::box) contains its frame spheres: a frame of one arm is compared with the other arm's frames only
+    // where its sphere meets that arm's box.
+    Batch boxB[6];
+    load(pb.box, 0, boxB, 6);
+    unsigned int near = 0;
+    for (std::size_t fa = 0; fa + 1 < a.frameBegin_.size(); ++fa)
+    {
+        if (!a.hasCapsules(fa))
+            continue;
+        Batch ca[3];
+        load(pa.frameCenters, 3 * fa, ca, 3);
+        const Batch ra(a.pairFrameRadius(fa));
+        auto meets = (ca[0] - ra <= boxB[3]) & (ca[0] + ra >= boxB[0]);
+        for (int c = 1; c < 3; ++c)
+            meets = meets & (ca[c] - ra <= boxB[3 + c]) & (ca[c] + ra >= boxB[c]);
+        if (xsimd::none(meets))
+            continue;
+        for (std::size_t fb = 0; fb + 1 < b.frameBegin_.size(); ++fb)
+        {
+            if (!b.hasCapsules(fb))
+                continue;
+            Batch cb[3];
+            load(pb.frameCenters, 3 * fb, cb, 3);
+            const Batch dx = ca[0] - cb[0], dy = ca[1] - cb[1], dz = ca[2] - cb[2];
+            const float spheres = a.pairFrameRadius(fa) + b.pairFrameRadius(fb);
+            if (xsimd::none(dx * dx + dy * dy + dz * dz < Batch(spheres * spheres)))
+                continue;
+            for (std::size_t m = a.frameBegin_[fa]; m < a.frameBegin_[fa + 1]; ++m)
+            {
+                const std::size_t i = a.byFrame_[m];
+                Batch ea[6];
+                load(pa.ends, 6 * i, ea, 6);
+                for (std::size_t k = b.frameBegin_[fb]; k < b.frameBegin_[fb + 1]; ++k)
+                {
+                    const std::size_t j = b.byFrame_[k];
+                    Batch eb[6];
+                    load(pb.ends, 6 * j, eb, 6);
+                    const Batch d2 = segmentSegmentDistanceSquared(ea[0], ea[1], ea[2], ea[3], ea[4], ea[5], eb[0],
+                                                                   eb[1], eb[2], eb[3], eb[4], eb[5]);
+                    const float reach = a.pairRadius_[i] + b.pairRadius_[j];
+                    const auto close = d2 < Batch(reach * reach);
+                    if (xsimd::none(close))
+                        continue;
+                    const float core = a.pairCoreRadius_[i] + b.pairCoreRadius_[j];
+                    touching = laneBits(d2 < Batch(core * core)) & lanes;
+                    if (touching != 0)
+                        return 0;
+                    near |= laneBits(close) & lanes;
+                }
+            }
+        }
+    }
+    return near;
 }

@@ -69,11 +69,42 @@ namespace ompl_parc
         /** \brief True if any of the \e count (1 .. width()) configurations \e configs (flat, dimension doubles
             each, within the joint bounds) collides with itself or with \e obstacles. Conservative: never false
             where the double-precision check finds a collision. */
-        bool anyCollides(const double *configs, std::size_t count, const ObstacleSet &obstacles) const;
+        bool anyCollides(const double *configs, std::size_t count, const ObstacleSet &obstacles) const
+        {
+            return anyCollides(configs, count, obstacles, nullptr);
+        }
 
         /** \brief How much every radius is inflated against obstacles to cover single-precision rounding
             (metres); less against the arm itself. */
         double getInflation() const { return inflation_; }
+
+        /** \brief Up to width() configurations of the arm placed in the world, one lane each: what nearLanes()
+            compares between two arms. Per capsule its end points (6 rows of width() floats), per frame the centre
+            of its sphere (3 rows); a lane's coordinates are within getInflation() of the double-precision ones. */
+        struct Placed
+        {
+            std::vector<float> ends, frameCenters;
+            /** \brief Per lane, a box around the arm (low x, y, z rows, then high). */
+            std::vector<float> box;
+            std::size_t count{0};
+        };
+
+        /** \brief Place \e count (1 .. width()) configurations \e configs (flat, dimension doubles each). */
+        void place(const double *configs, std::size_t count, Placed &placed) const;
+
+        /** \brief anyCollides(), and where none collides, the configurations placed into \e placed as place() would
+            (one pass of kinematics for both: the team check's robots alone, then their pairs). */
+        bool anyCollides(const double *configs, std::size_t count, const ObstacleSet &obstacles,
+                         Placed *placed) const;
+
+        /** \brief The lanes (bit l: configuration l) where arm \e a placed as \e pa and arm \e b placed as \e pb may
+            touch and only the exact test can tell; 0 once \e touching is set. Conservative both ways: a lane left
+            out of both is one where the double-precision capsules of the two arms are apart (by more than both
+            inflations twice over), and \e touching (bits too, set when some lane is found) is only set for lanes
+            where they overlap by more than that. Arms whose bases are farther apart than their reaches answer 0 at
+            once. */
+        static unsigned int nearLanes(const UrdfArmLanes &a, const Placed &pa, const UrdfArmLanes &b,
+                                      const Placed &pb, unsigned int &touching);
 
       private:
         unsigned int dimension_;
@@ -104,6 +135,25 @@ namespace ompl_parc
         std::vector<std::size_t> byFrame_, frameBegin_;
         bool hasCapsules(std::size_t f) const { return frameBegin_[f] != frameBegin_[f + 1]; }
         double selfInflation_, inflation_;
+        /** \brief The base's position and a radius around it containing the arm at every configuration (for
+            nearLanes()). */
+        double basePosition_[3], reach_;
+        /** \brief Frame \e f's sphere as nearLanes() compares it: grown by twice the inflation more than against
+            obstacles, so that it contains the float capsules within the pair test's reach. */
+        float pairFrameRadius(std::size_t f) const
+        {
+            return frameObstacleRadius_[f] + static_cast<float>(2. * inflation_);
+        }
+        /** \brief Per capsule, the radii nearLanes() uses: the capsule's grown by twice the inflation (apart beyond
+            it), and shrunk by as much (touching within it). */
+        std::vector<float> pairRadius_, pairCoreRadius_;
+
+        /** \brief The forward kinematics of \e count configurations into the thread's scratch (base frame). */
+        void computeKinematics(const double *configs, std::size_t count) const;
+        /** \brief Move the scratch's capsule end points and frame centres to the world frame. */
+        void moveScratchToWorld() const;
+        /** \brief Copy the scratch's world-frame lanes (moveScratchToWorld()) into \e placed. */
+        void storePlaced(std::size_t count, Placed &placed) const;
     };
 }  // namespace ompl_parc
 

@@ -3,6 +3,7 @@
 #include "ompl_parc/collision/CapsuleCollision.h"
 #include "ompl_parc/planners/subproblem/TeamPatch.h"
 #include "ompl_parc/robots/RakeMotionValidator.h"
+#include "ompl_parc/robots/UrdfArmLanes.h"
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
@@ -31,14 +32,27 @@ namespace
       public:
         StandingTeam(const ompl_parc::MultiRobotSpaceInformation &team, std::size_t robot,
                      const std::vector<const Config *> &configs)
-            : robot_(*team.getRobot(robot))
+            : robot_(*team.getRobot(robot)), lanes_(robot_.getLanes())
         {
+            const std::size_t width = ompl_parc::UrdfArmLanes::width();
             for (std::size_t j = 0; j < configs.size(); ++j)
                 if (j != robot)
                 {
+                    const ompl_parc::Robot &other = *team.getRobot(j);
                     standing_.emplace_back();
-                    team.getRobot(j)->computeBody(configs[j]->data(), standing_.back());
+                    other.computeBody(configs[j]->data(), standing_.back());
+                    standingLanes_.push_back(other.getLanes());
+                    if (standingLanes_.back() == nullptr)
+                        continue;
+                    // The standing configuration in every lane, so that it meets each lane of a moving batch.
+                    Config repeated;
+                    for (std::size_t l = 0; l < width; ++l)
+                        repeated.insert(repeated.end(), configs[j]->begin(), configs[j]->end());
+                    placed_.emplace_back();
+                    standingLanes_.back()->place(repeated.data(), width, placed_.back());
                 }
+            if (lanes_ == nullptr || placed_.size() != standing_.size())
+                placed_.clear();  // lanes only when every robot has them
         }
 
         bool valid(const double *q) const
@@ -50,10 +64,53 @@ namespace
                                 { return ompl_parc::bodiesCollide(body_, other); });
         }
 
+        /** \brief All \e count configurations \e q (flat) valid: the robot's own batch check, then, where every robot
+            has lanes, the standing robots compared a lane batch at a time and tested exactly only where the lanes
+            cannot tell (the answer of valid() on each configuration, see MultiRobotValidityChecker::allValid()). */
+        bool allValid(const double *q, std::size_t count) const
+        {
+            const unsigned int dim = robot_.getDimension();
+            if (placed_.empty())
+            {
+                for (std::size_t c = 0; c < count; ++c)
+                    if (!valid(q + c * dim))
+                        return false;
+                return true;
+            }
+            if (!robot_.allValid(q, count))
+                return false;
+            const std::size_t width = ompl_parc::UrdfArmLanes::width();
+            for (std::size_t first = 0; first < count; first += width)
+            {
+                const std::size_t lanes = std::min(width, count - first);
+                lanes_->place(q + first * dim, lanes, moving_);
+                for (std::size_t k = 0; k < placed_.size(); ++k)
+                {
+                    unsigned int touching = 0;
+                    const unsigned int near =
+                        ompl_parc::UrdfArmLanes::nearLanes(*lanes_, moving_, *standingLanes_[k], placed_[k], touching);
+                    if (touching != 0)
+                        return false;
+                    for (std::size_t l = 0; l < lanes; ++l)
+                        if (((near >> l) & 1u) != 0)
+                        {
+                            robot_.computeBody(q + (first + l) * dim, body_);
+                            if (ompl_parc::bodiesCollide(body_, standing_[k]))
+                                return false;
+                        }
+                }
+            }
+            return true;
+        }
+
       private:
         const ompl_parc::Robot &robot_;
+        const ompl_parc::UrdfArmLanes *lanes_;
         std::vector<ompl_parc::CollisionBody> standing_;
-        mutable ompl_parc::CollisionBody body_;  // scratch: a move is planned by one thread
+        std::vector<const ompl_parc::UrdfArmLanes *> standingLanes_;
+        std::vector<ompl_parc::UrdfArmLanes::Placed> placed_;  // the standing robots in lanes (all robots have them)
+        mutable ompl_parc::CollisionBody body_;                // scratch: a move is planned by one thread
+        mutable ompl_parc::UrdfArmLanes::Placed moving_;
     };
 
     /** One robot's move with the set of robots moved before it fixed: its own RRTConnect, kept between the rounds
@@ -76,13 +133,7 @@ namespace
                 { return standing.valid(state->as<ob::RealVectorStateSpace::StateType>()->values); });
             si_->setMotionValidator(std::make_shared<ompl_parc::RakeMotionValidator>(
                 si_.get(),
-                [&standing, dim](const double *q, std::size_t count)
-                {
-                    for (std::size_t c = 0; c < count; ++c)
-                        if (!standing.valid(q + c * dim))
-                            return false;
-                    return true;
-                },
+                [&standing](const double *q, std::size_t count) { return standing.allValid(q, count); },
                 si_->getStateValidityChecker().get()));
             si_->setup();
 
