@@ -147,7 +147,7 @@ std::vector<ompl_parc::Conflict> ompl_parc::test::allConflicts(const MultiRobotS
 }
 
 ompl_parc::MultiRobotProblem ompl_parc::test::problemOfPlan(const MultiRobotSpaceInformationPtr &si,
-                                                           const MultiRobotPlan &plan)
+                                                            const MultiRobotPlan &plan)
 {
     std::vector<std::vector<double>> starts, goals;
     for (std::size_t i = 0; i < plan.getRobotCount(); ++i)
@@ -228,4 +228,27 @@ std::string ompl_parc::test::messageOf(const std::function<void()> &f)
         return e.what();
     }
     return "";
+}
+
+std::string ompl_parc::test::sphereArmUrdf()
+{
+    std::string urdf = R"(<robot name="spheres"><link name="link0"><collision><geometry><sphere radius="0.08"/>)"
+                       R"(</geometry></collision></link>)";
+    for (int k = 1; k <= 6; ++k)
+    {
+        urdf += "<link name=\"link" + std::to_string(k) + "\">";
+        for (int s = 0; s < 8; ++s)
+        {
+            const double z = s < 6 ? 0.05 * s : 0.15, x = s == 6 ? 0.05 : (s == 7 ? -0.05 : 0.);
+            urdf += "<collision><origin xyz=\"" + std::to_string(x) + " 0 " + std::to_string(z) +
+                    "\"/><geometry><sphere radius=\"" + std::to_string(0.035 - 0.002 * k) +
+                    "\"/></geometry></collision>";
+        }
+        urdf += "</link><joint name=\"joint" + std::to_string(k) + "\" type=\"revolute\"><parent link=\"link" +
+                std::to_string(k - 1) + "\"/><child link=\"link" + std::to_string(k) + "\"/><origin xyz=\"0 0 " +
+                (k == 1 ? "0.1" : "0.3") + "\"/><axis xyz=\"" + (k % 2 == 1 ? "0 0 1" : "0 1 0") +
+                "\"/><limit lower=\"-2.9\" upper=\"2.9\" effort=\"1\" velocity=\"1\"/></joint>";
+    }
+    urdf += "</robot>";
+    return urdf;
 }

@@ -91,6 +91,11 @@ namespace ompl_parc::test
                                const std::string &mimic = "<mimic joint=\"finger_joint1\"/>",
                                const std::string &finger2Upper = "0.05");
 
+    /** \brief A six-joint arm whose links are covered by spheres, as VAMP and cuRobo model arms, chain "link0" ..
+        "link6": each link 0.3 m long with six spheres along it and two beside it, so several spheres per frame (the
+        lanes' per-frame spheres skip most sphere pairs). */
+    std::string sphereArmUrdf();
+
     /** \brief Replace robot \e a's path from timestep \e t on by robot \e b's (so that a and b collide from t on,
         up to b's arrival): the change an invalidation of (a, t) must account for. */
     void followFrom(MultiRobotPlan &plan, std::size_t a, std::size_t b, std::size_t t);

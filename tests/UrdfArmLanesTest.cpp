@@ -85,33 +85,13 @@ namespace
                                          UrdfArm::pose(base.x(), base.y(), base.z(), 0.2, 0., -0.7));
     }
 
-    /** A six-joint arm whose links are covered by spheres, as VAMP and cuRobo model arms: each link 0.3 m long
-        with six spheres along it and two beside it, so several spheres per frame (the kernel's per-frame spheres
-        skip most sphere pairs), based at (3, 2, 0.5) among obstacles around it. */
+    /** test::sphereArmUrdf() based at (3, 2, 0.5) among obstacles around it. */
     std::shared_ptr<const Robot> sphereArm()
     {
-        std::string urdf = R"(<robot name="spheres"><link name="link0"><collision><geometry><sphere radius="0.08"/>)"
-                           R"(</geometry></collision></link>)";
-        for (int k = 1; k <= 6; ++k)
-        {
-            urdf += "<link name=\"link" + std::to_string(k) + "\">";
-            for (int s = 0; s < 8; ++s)
-            {
-                const double z = s < 6 ? 0.05 * s : 0.15, x = s == 6 ? 0.05 : (s == 7 ? -0.05 : 0.);
-                urdf += "<collision><origin xyz=\"" + std::to_string(x) + " 0 " + std::to_string(z) +
-                        "\"/><geometry><sphere radius=\"" + std::to_string(0.035 - 0.002 * k) +
-                        "\"/></geometry></collision>";
-            }
-            urdf += "</link><joint name=\"joint" + std::to_string(k) + "\" type=\"revolute\"><parent link=\"link" +
-                    std::to_string(k - 1) + "\"/><child link=\"link" + std::to_string(k) + "\"/><origin xyz=\"0 0 " +
-                    (k == 1 ? "0.1" : "0.3") + "\"/><axis xyz=\"" + (k % 2 == 1 ? "0 0 1" : "0 1 0") +
-                    "\"/><limit lower=\"-2.9\" upper=\"2.9\" effort=\"1\" velocity=\"1\"/></joint>";
-        }
-        urdf += "</robot>";
+        const std::string urdf = test::sphereArmUrdf();
         const Eigen::Vector3d base(3., 2., 0.5);
-        return std::make_shared<UrdfArm>("spheres", obstaclesAround(base + Eigen::Vector3d(0., 0., 0.6), 1.),
-                                         urdf, "link0", "link6", UrdfArm::pose(base.x(), base.y(), base.z(), 0., 0.,
-                                                                                0.4));
+        return std::make_shared<UrdfArm>("spheres", obstaclesAround(base + Eigen::Vector3d(0., 0., 0.6), 1.), urdf,
+                                         "link0", "link6", UrdfArm::pose(base.x(), base.y(), base.z(), 0., 0., 0.4));
     }
 
     /** Random configurations: no collision of the double check missed, few extra rejections. */
@@ -239,6 +219,7 @@ TEST(UrdfArmLanes, BatchedMotionValidatorNeverAcceptsWhatTheDiscreteOneRejects)
             ++motions;
         }
         EXPECT_GT(discreteRejects, 100u) << robot->getName();
-        EXPECT_LE(extra, 30u) << robot->getName() << ": more than 1 % of the motions rejected beyond the discrete check";
+        EXPECT_LE(extra, 30u) << robot->getName()
+                              << ": more than 1 % of the motions rejected beyond the discrete check";
     }
 }

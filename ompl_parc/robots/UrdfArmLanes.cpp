@@ -87,7 +87,7 @@ ompl_parc::UrdfArmLanes::UrdfArmLanes(const Eigen::Isometry3d &basePose, unsigne
                                       const std::vector<Eigen::Vector3d> &offsetTranslations,
                                       std::vector<Capsule> capsules,
                                       std::vector<std::pair<std::size_t, std::size_t>> selfPairs)
-  : dimension_(dimension), joints_(std::move(joints)), selfPairs_(std::move(selfPairs))
+    : dimension_(dimension), joints_(std::move(joints)), selfPairs_(std::move(selfPairs))
 {
     // Every frame's origin is within the joint offsets and prismatic travels of all joints from the base.
     double reach = 0., extent = 0.;
@@ -124,6 +124,8 @@ ompl_parc::UrdfArmLanes::UrdfArmLanes(const Eigen::Isometry3d &basePose, unsigne
         radius_.push_back(static_cast<float>(c.radius + inflation_));
         pairRadius_.push_back(static_cast<float>(c.radius + 2. * inflation_));
         pairCoreRadius_.push_back(static_cast<float>(std::max(0., c.radius - 2. * inflation_)));
+        pairHalfLength_.push_back(static_cast<float>(0.5 * (c.b - c.a).norm() + inflation_));
+        sphere_.push_back(c.a == c.b);
     }
     for (int r = 0; r < 3; ++r)
         basePosition_[r] = basePose.translation()[r];
@@ -358,9 +360,14 @@ void ompl_parc::UrdfArmLanes::storePlaced(std::size_t count, Placed &placed) con
     const std::size_t frames = joints_.size() + 1, capsules = frame_.size();
     const Scratch &s = scratch();
     placed.ends.resize(6 * capsules * WIDTH);
+    placed.mids.resize(3 * capsules * WIDTH);
     placed.frameCenters.resize(3 * frames * WIDTH);
     for (std::size_t e = 0; e < 6 * capsules; ++e)
         s.ends[e].store_unaligned(&placed.ends[e * WIDTH]);
+    for (std::size_t i = 0; i < capsules; ++i)
+        for (int c = 0; c < 3; ++c)
+            (Batch(0.5f) * (s.ends[6 * i + c] + s.ends[6 * i + 3 + c]))
+                .store_unaligned(&placed.mids[(3 * i + c) * WIDTH]);
     // The arm's box per lane: around its frames' spheres as nearLanes() grows them.
     Batch lo[3], hi[3];
     for (int c = 0; c < 3; ++c)
@@ -431,19 +438,39 @@ unsigned int ompl_parc::UrdfArmLanes::nearLanes(const UrdfArmLanes &a, const Pla
             const float spheres = a.pairFrameRadius(fa) + b.pairFrameRadius(fb);
             if (xsimd::none(dx * dx + dy * dy + dz * dz < Batch(spheres * spheres)))
                 continue;
+            const float frameB = b.pairFrameRadius(fb);
             for (std::size_t m = a.frameBegin_[fa]; m < a.frameBegin_[fa + 1]; ++m)
             {
                 const std::size_t i = a.byFrame_[m];
-                Batch ea[6];
-                load(pa.ends, 6 * i, ea, 6);
+                // A float capsule lies within its pairHalfLength_ of its midpoint: capsule i against frame fb's sphere,
+                // then against each of its capsules, their midpoints first (for two spheres, whose end points are
+                // computed alike, that is their distance), then their segments.
+                Batch mida[3];
+                load(pa.mids, 3 * i, mida, 3);
+                const Batch fx = mida[0] - cb[0], fy = mida[1] - cb[1], fz = mida[2] - cb[2];
+                const float toFrame = a.pairHalfLength_[i] + a.pairRadius_[i] + frameB;
+                if (xsimd::none(fx * fx + fy * fy + fz * fz < Batch(toFrame * toFrame)))
+                    continue;
                 for (std::size_t k = b.frameBegin_[fb]; k < b.frameBegin_[fb + 1]; ++k)
                 {
                     const std::size_t j = b.byFrame_[k];
-                    Batch eb[6];
-                    load(pb.ends, 6 * j, eb, 6);
-                    const Batch d2 = segmentSegmentDistanceSquared(ea[0], ea[1], ea[2], ea[3], ea[4], ea[5], eb[0],
-                                                                   eb[1], eb[2], eb[3], eb[4], eb[5]);
+                    Batch midb[3];
+                    load(pb.mids, 3 * j, midb, 3);
+                    const Batch ex = mida[0] - midb[0], ey = mida[1] - midb[1], ez = mida[2] - midb[2];
+                    const Batch mid2 = ex * ex + ey * ey + ez * ez;
                     const float reach = a.pairRadius_[i] + b.pairRadius_[j];
+                    const float around = a.pairHalfLength_[i] + b.pairHalfLength_[j] + reach;
+                    if (xsimd::none(mid2 < Batch(around * around)))
+                        continue;
+                    Batch d2 = mid2;
+                    if (!a.sphere_[i] || !b.sphere_[j])
+                    {
+                        Batch ea[6], eb[6];
+                        load(pa.ends, 6 * i, ea, 6);
+                        load(pb.ends, 6 * j, eb, 6);
+                        d2 = segmentSegmentDistanceSquared(ea[0], ea[1], ea[2], ea[3], ea[4], ea[5], eb[0], eb[1],
+                                                           eb[2], eb[3], eb[4], eb[5]);
+                    }
                     const auto close = d2 < Batch(reach * reach);
                     if (xsimd::none(close))
                         continue;

@@ -26,12 +26,12 @@ namespace ompl_parc
         relative. The kinematics run in the base frame, where coordinates are bounded by the arm's reach S (joint
         offsets, prismatic joints' travel and capsule extents); each of the n joints adds a few roundings of
         rotation entries and of S (sin/cos of a rounded angle included), about 10 n S 2^-24 in all, so
-        self-collision inflates radii by (n + 4) S 2^-20 (16 um for a Panda). The end points then move to the world frame (a rotation and the
-        base translation B, a few more roundings of B + S), so the environment test inflates by
+        self-collision inflates radii by (n + 4) S 2^-20 (16 um for a Panda). The end points then move to the world
+       frame (a rotation and the base translation B, a few more roundings of B + S), so the environment test inflates by
         getInflation() = that + (B + S) 2^-21 (19 um for a Panda two metres from the origin). Tests bisect to
-        configurations a hair inside collisions and check none is missed. The width is the compiler's vector width for float (4 on baseline
-        x86-64, 8 with AVX2 via OMPL_PARC_NATIVE), fixed at compile time. All state is per call (thread
-        local scratch), so one kernel serves every thread. */
+        configurations a hair inside collisions and check none is missed. The width is the compiler's vector width for
+       float (4 on baseline x86-64, 8 with AVX2 via OMPL_PARC_NATIVE), fixed at compile time. All state is per call
+       (thread local scratch), so one kernel serves every thread. */
     class UrdfArmLanes
     {
       public:
@@ -79,11 +79,13 @@ namespace ompl_parc
         double getInflation() const { return inflation_; }
 
         /** \brief Up to width() configurations of the arm placed in the world, one lane each: what nearLanes()
-            compares between two arms. Per capsule its end points (6 rows of width() floats), per frame the centre
-            of its sphere (3 rows); a lane's coordinates are within getInflation() of the double-precision ones. */
+            compares between two arms, in rows of width() floats (one per lane); a lane's coordinates are within
+            getInflation() of the double-precision ones. */
         struct Placed
         {
-            std::vector<float> ends, frameCenters;
+            /** \brief Per capsule its end points (6 rows) and their midpoint (3 rows); per frame its sphere's
+                centre (3 rows). */
+            std::vector<float> ends, mids, frameCenters;
             /** \brief Per lane, a box around the arm (low x, y, z rows, then high). */
             std::vector<float> box;
             std::size_t count{0};
@@ -94,8 +96,7 @@ namespace ompl_parc
 
         /** \brief anyCollides(), and where none collides, the configurations placed into \e placed as place() would
             (one pass of kinematics for both: the team check's robots alone, then their pairs). */
-        bool anyCollides(const double *configs, std::size_t count, const ObstacleSet &obstacles,
-                         Placed *placed) const;
+        bool anyCollides(const double *configs, std::size_t count, const ObstacleSet &obstacles, Placed *placed) const;
 
         /** \brief The lanes (bit l: configuration l) where arm \e a placed as \e pa and arm \e b placed as \e pb may
             touch and only the exact test can tell; 0 once \e touching is set. Conservative both ways: a lane left
@@ -103,8 +104,8 @@ namespace ompl_parc
             inflations twice over), and \e touching (bits too, set when some lane is found) is only set for lanes
             where they overlap by more than that. Arms whose bases are farther apart than their reaches answer 0 at
             once. */
-        static unsigned int nearLanes(const UrdfArmLanes &a, const Placed &pa, const UrdfArmLanes &b,
-                                      const Placed &pb, unsigned int &touching);
+        static unsigned int nearLanes(const UrdfArmLanes &a, const Placed &pa, const UrdfArmLanes &b, const Placed &pb,
+                                      unsigned int &touching);
 
       private:
         unsigned int dimension_;
@@ -147,6 +148,10 @@ namespace ompl_parc
         /** \brief Per capsule, the radii nearLanes() uses: the capsule's grown by twice the inflation (apart beyond
             it), and shrunk by as much (touching within it). */
         std::vector<float> pairRadius_, pairCoreRadius_;
+        /** \brief Per capsule, half its length grown by the inflation (its float end points lie within that of their
+            midpoint), and whether it is a sphere (equal end points, computed alike in every lane). */
+        std::vector<float> pairHalfLength_;
+        std::vector<bool> sphere_;
 
         /** \brief The forward kinematics of \e count configurations into the thread's scratch (base frame). */
         void computeKinematics(const double *configs, std::size_t count) const;

@@ -132,8 +132,7 @@ namespace
                 [&standing](const ob::State *state)
                 { return standing.valid(state->as<ob::RealVectorStateSpace::StateType>()->values); });
             si_->setMotionValidator(std::make_shared<ompl_parc::RakeMotionValidator>(
-                si_.get(),
-                [&standing](const double *q, std::size_t count) { return standing.allValid(q, count); },
+                si_.get(), [&standing](const double *q, std::size_t count) { return standing.allValid(q, count); },
                 si_->getStateValidityChecker().get()));
             si_->setup();
 
