@@ -64,9 +64,10 @@ namespace
                                 { return ompl_parc::bodiesCollide(body_, other); });
         }
 
-        /** \brief All \e count configurations \e q (flat) valid: the robot's own batch check, then, where every robot
-            has lanes, the standing robots compared a lane batch at a time and tested exactly only where the lanes
-            cannot tell (the answer of valid() on each configuration, see MultiRobotValidityChecker::allValid()). */
+        /** \brief All \e count configurations \e q (flat) valid. Where every robot has lanes: the robot alone as its
+            batch check decides (Robot::allValid(), as in the team's own check), then the standing robots compared a
+            lane batch at a time and tested exactly only where the lanes cannot tell, which answers as valid() does
+            (MultiRobotValidityChecker::allValid()); otherwise valid() on each configuration. */
         bool allValid(const double *q, std::size_t count) const
         {
             const unsigned int dim = robot_.getDimension();
