@@ -27,11 +27,12 @@ namespace ompl_parc
         offsets, prismatic joints' travel and capsule extents); each of the n joints adds a few roundings of
         rotation entries and of S (sin/cos of a rounded angle included), about 10 n S 2^-24 in all, so
         self-collision inflates radii by (n + 4) S 2^-20 (16 um for a Panda). The end points then move to the world
-       frame (a rotation and the base translation B, a few more roundings of B + S), so the environment test inflates by
-        getInflation() = that + (B + S) 2^-21 (19 um for a Panda two metres from the origin). Tests bisect to
-        configurations a hair inside collisions and check none is missed. The width is the compiler's vector width for
-       float (4 on baseline x86-64, 8 with AVX2 via OMPL_PARC_NATIVE), fixed at compile time. All state is per call
-       (thread local scratch), so one kernel serves every thread. */
+        frame (a rotation and the base translation B, a few more roundings of B + S), so the environment test
+        inflates by getInflation() = that + (B + S) 2^-21 (19 um for a Panda two metres from the origin). Tests
+        bisect to configurations a hair inside collisions and check none is missed. The width is the compiler's
+        vector width for float (4 on baseline x86-64, 8 with AVX2 via OMPL_PARC_NATIVE), fixed at compile time. All
+        state is per call (thread local scratch), so one kernel serves every thread. Two arms placed in the world
+        (place(), or anyCollides() with a Placed) are compared by nearLanes(), which the team checks use. */
     class UrdfArmLanes
     {
       public:
