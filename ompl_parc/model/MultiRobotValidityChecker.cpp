@@ -12,8 +12,12 @@ ompl_parc::MultiRobotValidityChecker::MultiRobotValidityChecker(ompl::base::Spac
                                                                 std::vector<RobotPtr> team)
     : ompl::base::StateValidityChecker(si), team_(std::move(team))
 {
+    offsets_.push_back(0);
     for (const RobotPtr &robot : team_)
+    {
         lanes_.push_back(robot->getLanes());
+        offsets_.push_back(offsets_.back() + robot->getDimension());
+    }
     if (std::find(lanes_.begin(), lanes_.end(), nullptr) != lanes_.end())
         lanes_.clear();
 }
@@ -55,16 +59,14 @@ bool ompl_parc::MultiRobotValidityChecker::allValid(const double *configs, std::
     const std::size_t n = team_.size();
     if (n >= 2 && !lanes_.empty())
         return lanesValid(configs, count);
-    std::size_t total = 0;
-    for (const RobotPtr &robot : team_)
-        total += robot->getDimension();
+    const std::size_t total = offsets_[n];
     // Each robot alone, on its own batch (its kernel may check several configurations at once)...
-    for (std::size_t i = 0, offset = 0; i < n; offset += team_[i]->getDimension(), ++i)
+    for (std::size_t i = 0; i < n; ++i)
     {
         const unsigned int d = team_[i]->getDimension();
         own.resize(count * d);
         for (std::size_t k = 0; k < count; ++k)
-            std::copy(configs + k * total + offset, configs + k * total + offset + d, own.begin() + k * d);
+            std::copy_n(configs + k * total + offsets_[i], d, own.begin() + k * d);
         if (!team_[i]->allValid(own.data(), count))
             return false;
     }
@@ -74,8 +76,8 @@ bool ompl_parc::MultiRobotValidityChecker::allValid(const double *configs, std::
     bodies.resize(n);
     for (std::size_t k = 0; k < count; ++k)
     {
-        for (std::size_t i = 0, offset = 0; i < n; offset += team_[i]->getDimension(), ++i)
-            team_[i]->computeBody(configs + k * total + offset, bodies[i]);
+        for (std::size_t i = 0; i < n; ++i)
+            team_[i]->computeBody(configs + k * total + offsets_[i], bodies[i]);
         if (anyPairCollides(bodies))
             return false;
     }
@@ -87,12 +89,7 @@ bool ompl_parc::MultiRobotValidityChecker::lanesValid(const double *configs, std
     thread_local std::vector<double> own;
     thread_local std::vector<UrdfArmLanes::Placed> placed;
     thread_local CollisionBody bodyI, bodyJ;
-    thread_local std::vector<std::size_t> offsets;
-    const std::size_t n = team_.size(), width = UrdfArmLanes::width();
-    offsets.assign(n + 1, 0);
-    for (std::size_t i = 0; i < n; ++i)
-        offsets[i + 1] = offsets[i] + team_[i]->getDimension();
-    const std::size_t total = offsets[n];
+    const std::size_t n = team_.size(), width = UrdfArmLanes::width(), total = offsets_[n];
     placed.resize(n);
     for (std::size_t first = 0; first < count; first += width)
     {
@@ -102,13 +99,11 @@ bool ompl_parc::MultiRobotValidityChecker::lanesValid(const double *configs, std
             // The robot alone (bounds, then itself and the environment in lanes, which also places it).
             const Robot &robot = *team_[i];
             const unsigned int d = robot.getDimension();
-            const auto &bounds = robot.getBounds();
             own.resize(lanes * d);
             for (std::size_t l = 0; l < lanes; ++l)
-                std::copy_n(configs + (first + l) * total + offsets[i], d, own.begin() + l * d);
-            for (std::size_t k = 0; k < lanes * d; ++k)
-                if (!(own[k] >= bounds.low[k % d] && own[k] <= bounds.high[k % d]))
-                    return false;
+                std::copy_n(configs + (first + l) * total + offsets_[i], d, own.begin() + l * d);
+            if (!robot.withinBounds(own.data(), lanes))
+                return false;
             if (lanes_[i]->anyCollides(own.data(), lanes, robot.getEnvironment()->getObstacleSet(), &placed[i]))
                 return false;
         }
@@ -125,8 +120,8 @@ bool ompl_parc::MultiRobotValidityChecker::lanesValid(const double *configs, std
                     if (((near >> l) & 1u) == 0)
                         continue;
                     const double *q = configs + (first + l) * total;
-                    team_[i]->computeBody(q + offsets[i], bodyI);
-                    team_[j]->computeBody(q + offsets[j], bodyJ);
+                    team_[i]->computeBody(q + offsets_[i], bodyI);
+                    team_[j]->computeBody(q + offsets_[j], bodyJ);
                     if (bodiesCollide(bodyI, bodyJ))
                         return false;
                 }

@@ -49,6 +49,8 @@ namespace ompl_parc
         bool lanesValid(const double *configs, std::size_t count) const;
 
         std::vector<RobotPtr> team_;
+        /** \brief Where each robot's values start in a composite configuration (the last entry: its size). */
+        std::vector<std::size_t> offsets_;
         /** \brief Each robot's lanes, when every robot of the team has them (else empty). */
         std::vector<const UrdfArmLanes *> lanes_;
     };

@@ -25,10 +25,8 @@ void ompl_parc::DiscRobot::computeCapsules(const double *q, CollisionBody &body)
 
 std::optional<bool> ompl_parc::DiscRobot::sweepValid(const double *from, const double *to) const
 {
-    const auto &bounds = getBounds();
-    for (unsigned int d = 0; d < 2; ++d)
-        if (!(to[d] >= bounds.low[d] && to[d] <= bounds.high[d]))
-            return false;
+    if (!withinBounds(to, 1))
+        return false;
     thread_local CollisionBody sweep;
     sweep.resize(1, from[0] == to[0] && from[1] == to[1]);
     sweep.ax_[0] = from[0];

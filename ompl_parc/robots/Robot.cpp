@@ -68,6 +68,15 @@ void ompl_parc::Robot::setResolution(double stepsPerUnit)
     si_->setup();
 }
 
+bool ompl_parc::Robot::withinBounds(const double *configs, std::size_t count) const
+{
+    for (std::size_t c = 0; c < count; ++c, configs += dimension_)
+        for (unsigned int i = 0; i < dimension_; ++i)
+            if (!(configs[i] >= bounds_.low[i] && configs[i] <= bounds_.high[i]))
+                return false;
+    return true;
+}
+
 ompl_parc::Robot::Validity ompl_parc::Robot::checkValidity(const double *q) const
 {
     thread_local CollisionBody body;
@@ -76,9 +85,8 @@ ompl_parc::Robot::Validity ompl_parc::Robot::checkValidity(const double *q) cons
 
 ompl_parc::Robot::Validity ompl_parc::Robot::checkValidity(const double *q, CollisionBody &body) const
 {
-    for (unsigned int i = 0; i < dimension_; ++i)
-        if (!(q[i] >= bounds_.low[i] && q[i] <= bounds_.high[i]))
-            return Validity::OUT_OF_BOUNDS;
+    if (!withinBounds(q, 1))
+        return Validity::OUT_OF_BOUNDS;
     computeBody(q, body);
     if (selfCollides(body))
         return Validity::SELF_COLLISION;

@@ -73,6 +73,10 @@ namespace ompl_parc
             return selfCollisionPairs_;
         }
 
+        /** \brief True if all \e count configurations \e configs (flat, getDimension() doubles each) are within the
+            bounds (NaN never is). */
+        bool withinBounds(const double *configs, std::size_t count) const;
+
         /** \brief Checks bounds, self-collision and the environment, in that order. */
         Validity checkValidity(const double *q) const;
         /** \brief checkValidity(), leaving the body at \e q in \e body (unless \e q is out of bounds), for callers

@@ -701,10 +701,8 @@ ompl_parc::UrdfArm::UrdfArm(std::string name, EnvironmentPtr environment, Chain 
 bool ompl_parc::UrdfArm::allValid(const double *configs, std::size_t count) const
 {
     const unsigned int n = getDimension();
-    const auto &bounds = getBounds();
-    for (std::size_t k = 0; k < count * n; ++k)
-        if (!(configs[k] >= bounds.low[k % n] && configs[k] <= bounds.high[k % n]))
-            return false;
+    if (!withinBounds(configs, count))
+        return false;
     const ObstacleSet &obstacles = getEnvironment()->getObstacleSet();
     const std::size_t width = UrdfArmLanes::width();
     for (std::size_t first = 0; first < count; first += width)
