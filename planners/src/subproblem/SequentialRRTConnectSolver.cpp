@@ -1,9 +1,13 @@
 #include "ompl_parc/planners/subproblem/SequentialRRTConnectSolver.h"
 
 #include "ompl_parc/collision/CapsuleCollision.h"
+#include "ompl_parc/planners/subproblem/MoveScheduler.h"
 #include "ompl_parc/planners/subproblem/TeamPatch.h"
 #include "ompl_parc/robots/RakeMotionValidator.h"
 #include "ompl_parc/robots/UrdfArmLanes.h"
+#include "ompl_parc/util/OmplCompat.h"
+#include "ompl_parc/util/SeededPathSimplifier.h"
+#include "ompl_parc/util/SeededRealVectorSampler.h"
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
@@ -115,13 +119,14 @@ namespace
     };
 
     /** One robot's move with the set of robots moved before it fixed: its own RRTConnect, kept between the rounds
-        of a search so that a round with a larger cap goes on growing the trees of the round before. */
+        of a search so that a round with a larger cap goes on growing the trees of the round before. Its path is
+        shortened, where asked, among the same standing robots (drawn from \e seed). */
     class Move
     {
       public:
         Move(const ompl_parc::MultiRobotSpaceInformation &team, std::size_t robot,
-             const std::vector<const Config *> &configs, const Config &goal)
-            : standing_(team, robot, configs),
+             const std::vector<const Config *> &configs, const Config &goal, bool simplify, std::uint_fast32_t seed)
+            : standing_(team, robot, configs), simplify_(simplify), seed_(seed),
               // The robot's space in the team's (local bounds, seeded sampler, one check per timestep), its motions
               // sampled at every timestep by the rake, as the team's would be.
               si_(std::make_shared<ob::SpaceInformation>(
@@ -174,7 +179,15 @@ namespace
                 ptc, ob::PlannerTerminationCondition([spent, cap] { return ++*spent > cap; }));
             if (planner_->solve(capped) != ob::PlannerStatus::EXACT_SOLUTION)
                 return false;
-            for (const ob::State *state : pdef_->getSolutionPath()->as<og::PathGeometric>()->getStates())
+            auto &solution = *pdef_->getSolutionPath()->as<og::PathGeometric>();
+            if (simplify_)
+            {
+                // As the team's patches are (team_patch::lay): one pass of vertex reduction and of shortcutting.
+                ompl_parc::SeededPathSimplifier simplifier(si_, seed_);
+                simplifier.reduceVertices(solution);
+                ompl_parc::compat::shortcutPath(simplifier, solution, 128, 32);
+            }
+            for (const ob::State *state : solution.getStates())
             {
                 const double *values = state->as<ob::RealVectorStateSpace::StateType>()->values;
                 path_.emplace_back(values, values + si_->getStateDimension());
@@ -185,6 +198,8 @@ namespace
 
       private:
         StandingTeam standing_;
+        bool simplify_;
+        std::uint_fast32_t seed_;
         ob::SpaceInformationPtr si_;
         ob::ProblemDefinitionPtr pdef_;
         std::unique_ptr<og::RRTConnect> planner_;  // null: solved, or never solvable
@@ -201,9 +216,11 @@ namespace
         bool started() const { return team_ != nullptr; }
 
         void start(std::shared_ptr<ompl_parc::MultiRobotSpaceInformation> team, std::size_t robots,
-                   std::uint_fast32_t seed)
+                   std::uint_fast32_t seed, bool simplify)
         {
             team_ = std::move(team);
+            seed_ = seed;
+            simplify_ = simplify;
             rng_.seed(seed);
             order_.resize(robots);
             for (std::size_t k = 0; k < robots; ++k)
@@ -278,7 +295,8 @@ namespace
                 std::vector<const Config *> configs;
                 for (std::size_t j = 0; j < subproblem_->robots.size(); ++j)
                     configs.push_back((moved >> j) & 1u ? &subproblem_->goals[j] : &subproblem_->starts[j]);
-                slot = std::make_unique<Move>(*team_, k, configs, subproblem_->goals[k]);
+                slot = std::make_unique<Move>(*team_, k, configs, subproblem_->goals[k], simplify_,
+                                              ompl_parc::mixSeed(seed_, (std::uint64_t{moved} << 5) | k));
             }
             return *slot;
         }
@@ -287,6 +305,8 @@ namespace
         const ompl_parc::Subproblem *subproblem_{nullptr};  // of the call running
         ob::PlannerTerminationCondition ptc_{ob::plannerAlwaysTerminatingCondition()};
         std::mt19937 rng_;
+        std::uint_fast32_t seed_{0};
+        bool simplify_{false};
         unsigned int round_{0};
         bool inRound_{false};
         unsigned int moveCap_{0};
@@ -326,7 +346,7 @@ bool ompl_parc::SequentialRRTConnectSolver::resume(const MultiRobotSpaceInformat
         auto local = subproblem.createSpaceInformation(si, seed);
         if (!local)
             return false;
-        search->start(std::move(local), subproblem.robots.size(), seed);
+        search->start(std::move(local), subproblem.robots.size(), seed, simplify_);
     }
     const auto &local = search->team();
     ob::ScopedState<> start(local), goal(local);
@@ -345,6 +365,8 @@ bool ompl_parc::SequentialRRTConnectSolver::resume(const MultiRobotSpaceInformat
             std::copy((*states)[s].begin(), (*states)[s].end(), local->getRobotValues(at.get(), robot));
             path.append(at.get());
         }
+    // The moves overlapped in time where the robots stay apart (the path above where they cannot).
+    MoveScheduler(local).schedule(moves, start.get(), path);
     team_patch::lay(local, path, seed, simplify_, patch);
     return true;
 }

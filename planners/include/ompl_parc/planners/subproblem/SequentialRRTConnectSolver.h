@@ -18,16 +18,18 @@ namespace ompl_parc
         of the round before (from 256), all moves of a call together at the subproblem's sample cap; a move found
         in one round is kept for the next. A window (not the team's global problem) gets the first round only: it
         starts and ends mid-motion with the team close together, where single moves seldom work, and the rounds
-        would cost each failed window as much as composite RRT-Connect's call (docs/results.md). The team path
-        (one robot moving per segment) is checked with the team's own motion validator as it is planned, optionally
-        shortened like composite RRT-Connect's (which lets robots move together again), and laid on the timestep
-        grid: a patch lasts as long as the moves together, the price of not searching the coupled space. Teams of more than 16 robots are declined.
+        would cost each failed window as much as composite RRT-Connect's call (docs/results.md). Each move is checked
+        with the team's own checks as it is planned (and, with \e simplify, shortened among the same standing robots).
+        The moves are then overlapped in time where the robots stay apart (MoveScheduler: a move that touches no
+        robot moved before it starts at once, not when they have all arrived), the team path optionally shortened
+        like composite RRT-Connect's (which lets robots move together again), and laid on the timestep grid.
+        Teams of more than 16 robots are declined.
         ARC's global rounds of one team resume the search where the last round's call was cut. */
     class SequentialRRTConnectSolver : public SubproblemSolver
     {
       public:
-        /** \brief \e simplify: shorten the team path as CompositeRRTConnectSolver does (ArcSettings::shortenPatches).
-         */
+        /** \brief \e simplify: shorten each move, and the team path as CompositeRRTConnectSolver does
+            (ArcSettings::shortenPatches). */
         explicit SequentialRRTConnectSolver(bool simplify = false);
 
         std::string getName() const override { return "sequential-rrtc"; }
