@@ -92,13 +92,14 @@ namespace ompl_parc
             default): no team replan. */
         void setTeamReplanTime(double seconds) { teamReplanTime_ = seconds; }
 
-        /** \brief Before the team replan, solve the whole team from the plan's starts to its goals with \e solver, a
-            coupled one (LatticeMapfSolver for discs: the whole team on one lattice, in milliseconds where prioritised
-            planning needs seconds among dense teams), under half the team replan's time (setTeamReplanTime()); keep its
-            plan as a team replan's, if better by the objective and conflict-free. The team replan then has to beat it.
-            A repair's patch holds the robots of its window together for as long as the slowest needs; a plan made
-            for the whole team at once has no such chain of waits. Not tried where the solver does not apply to the
-            team (SubproblemSolver::appliesTo(): a lattice on arms). Null (the default): none. */
+        /** \brief Before the team replan, solve the whole team from the plan's starts to its goals with \e solver
+            (the planners' WholeTeamSolver: for discs the whole team on one lattice, in milliseconds where prioritised
+            planning needs seconds among dense teams; for arms one-arm moves overlapped in time), under half the team
+            replan's time (setTeamReplanTime()); keep its plan as a team replan's, if better by the objective and
+            conflict-free. The team replan then has to beat it. A repair's patch holds the robots of its window
+            together for as long as the slowest needs; a plan made for the whole team at once has no such chain of
+            waits. Not tried where the solver does not apply to the team (SubproblemSolver::appliesTo()). Null (the
+            default): none. */
         void setTeamSolver(SubproblemSolverPtr solver) { teamSolver_ = std::move(solver); }
 
         /** \brief Let the team replan go on from where the last smooth() with \e memory (the replanner's

@@ -2,6 +2,7 @@
 
 #include "ompl_parc/planners/subproblem/CompositeRRTConnectSolver.h"
 #include "ompl_parc/planners/subproblem/LatticeMapfSolver.h"
+#include "ompl_parc/planners/subproblem/WholeTeamSolver.h"
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
 #include "ompl_parc/planners/subproblem/SequentialRRTConnectSolver.h"
 #include "ompl_parc/util/InnerPlannerLog.h"
@@ -63,7 +64,7 @@ ompl_parc::ArcPlannerBase::ArcPlannerBase(const ob::SpaceInformationPtr &si, con
     setProfile("auto");
     smoothing_.declareParameter(*this);
     smoothing_.setReplanner([] { return PrioritizedSTRRTSolver::makeReplanner(); });
-    smoothing_.setTeamSolver(&LatticeMapfSolver::makeTeamSolver);
+    smoothing_.setTeamSolver(&WholeTeamSolver::make);
     smoothing_.setTeamReplanShare(0.5);
 #define OMPL_PARC_ARC_KNOB(Name, member, parameter, Type, Parameter, range, ...)                                       \
     declareParam<Parameter>(parameter, this, &ArcPlannerBase::set##Name, &ArcPlannerBase::get##Name, range);
@@ -302,7 +303,7 @@ void ompl_parc::ArcPlannerBase::improve(const ob::PlannerTerminationCondition &p
     reportTo_->reachStage(ArcProgress::Stage::SMOOTHING);
     PlanImprover improver(mrsi_, objective_,
                           [](bool shuffle) { return PrioritizedSTRRTSolver::makeReplanner(shuffle); });
-    improver.setTeamSolver(&LatticeMapfSolver::makeTeamSolver);
+    improver.setTeamSolver(&WholeTeamSolver::make);
     improvement_ = improver.improve(*smoothed_, workspace_->getPool(), ptc, mixSeed(loop_->getSeed(), 0xa117), report);
     OMPL_INFORM("%s: %zu anytime rounds, %zu better plans; the best has %s %zu", getName().c_str(),
                 improvement_->rounds, improvement_->improvements, getObjective().c_str(),

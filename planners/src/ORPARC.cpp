@@ -1,6 +1,6 @@
 #include "ompl_parc/planners/ORPARC.h"
 
-#include "ompl_parc/planners/subproblem/LatticeMapfSolver.h"
+#include "ompl_parc/planners/subproblem/WholeTeamSolver.h"
 #include "ompl_parc/planners/subproblem/PrioritizedSTRRTSolver.h"
 #include "ompl_parc/quality/PlanObjective.h"
 #include "ompl_parc/quality/PlanQuality.h"
@@ -25,7 +25,7 @@ ompl_parc::ORPARC::ORPARC(const ob::SpaceInformationPtr &si)
     params().include(prototype_->params());
     race_.declareInstances(params());
     smoothing_.setReplanner([] { return PrioritizedSTRRTSolver::makeReplanner(); });
-    smoothing_.setTeamSolver(&LatticeMapfSolver::makeTeamSolver);
+    smoothing_.setTeamSolver(&WholeTeamSolver::make);
     smoothing_.setTeamReplanShare(0.5);
     declareParam<unsigned int>("total_workers", this, &ORPARC::setTotalWorkers, &ORPARC::getTotalWorkers, "1:1:64");
     declareParam<bool>("diversify", this, &ORPARC::setDiversify, &ORPARC::getDiversify, "0,1");
