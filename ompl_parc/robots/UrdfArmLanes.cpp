@@ -316,15 +316,29 @@ bool ompl_parc::UrdfArmLanes::anyCollides(const double *configs, std::size_t cou
     // lane that overlaps.
     moveScratchToWorld();
     s.capsule.resize(1, false);
+    // The box of every frame's obstacle sphere in every lane: an obstacle box it misses misses each of them, as the
+    // same float bounds compare below, and is passed with six comparisons.
+    float armLo[3], armHi[3];
+    armBox(armLo, armHi);
     for (std::size_t k = 0; k < obstacles.size(); ++k)
     {
         double lo[3], hi[3];
         obstacles.getBox(k, lo, hi);
+        float fLo[3], fHi[3];
+        bool apart = false;
+        for (int c = 0; c < 3; ++c)
+        {
+            fLo[c] = static_cast<float>(lo[c] - inflation_);
+            fHi[c] = static_cast<float>(hi[c] + inflation_);
+            apart = apart || armLo[c] > fHi[c] || armHi[c] < fLo[c];
+        }
+        if (apart)
+            continue;
         Batch boxLo[3], boxHi[3];
         for (int c = 0; c < 3; ++c)
         {
-            boxLo[c] = Batch(static_cast<float>(lo[c] - inflation_));
-            boxHi[c] = Batch(static_cast<float>(hi[c] + inflation_));
+            boxLo[c] = Batch(fLo[c]);
+            boxHi[c] = Batch(fHi[c]);
         }
         for (std::size_t f = 0; f < frames; ++f)
         {
@@ -346,6 +360,35 @@ bool ompl_parc::UrdfArmLanes::anyCollides(const double *configs, std::size_t cou
     if (placed != nullptr)
         storePlaced(count, *placed);
     return false;
+}
+
+void ompl_parc::UrdfArmLanes::armBox(float lo[3], float hi[3]) const
+{
+    const Scratch &s = scratch();
+    Batch low[3], high[3];
+    for (int c = 0; c < 3; ++c)
+    {
+        low[c] = Batch(INFINITY);
+        high[c] = Batch(-INFINITY);
+    }
+    for (std::size_t f = 0; f + 1 < frameBegin_.size(); ++f)
+        if (hasCapsules(f))
+        {
+            const Batch reach(frameObstacleRadius_[f]);
+            for (int c = 0; c < 3; ++c)
+            {
+                low[c] = xsimd::min(low[c], s.frameCenters[3 * f + c] - reach);
+                high[c] = xsimd::max(high[c], s.frameCenters[3 * f + c] + reach);
+            }
+        }
+    alignas(64) float lanes[WIDTH];
+    for (int c = 0; c < 3; ++c)
+    {
+        low[c].store_aligned(lanes);
+        lo[c] = *std::min_element(lanes, lanes + WIDTH);
+        high[c].store_aligned(lanes);
+        hi[c] = *std::max_element(lanes, lanes + WIDTH);
+    }
 }
 
 void ompl_parc::UrdfArmLanes::place(const double *configs, std::size_t count, Placed &placed) const

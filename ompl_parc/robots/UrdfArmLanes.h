@@ -158,6 +158,9 @@ namespace ompl_parc
         void computeKinematics(const double *configs, std::size_t count) const;
         /** \brief Move the scratch's capsule end points and frame centres to the world frame. */
         void moveScratchToWorld() const;
+        /** \brief Into \e lo and \e hi, the box around every frame's obstacle sphere in every lane of the scratch's
+            world-frame lanes (moveScratchToWorld()), in the floats anyCollides() compares with obstacle boxes. */
+        void armBox(float lo[3], float hi[3]) const;
         /** \brief Copy the scratch's world-frame lanes (moveScratchToWorld()) into \e placed. */
         void storePlaced(std::size_t count, Placed &placed) const;
     };
