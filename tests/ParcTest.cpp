@@ -442,29 +442,38 @@ INSTANTIATE_TEST_SUITE_P(Scenarios, OrParcSolves,
 
 TEST(OrParc, OddInstancesRepairEagerlyUnlessDiversifyIsOff)
 {
-    // A portfolio: the odd instances get a quarter of the sample cap and twice the window growth (the panda profile's
-    // 12500 and 2.5 here), the even ones the prototype's settings; with diversify off, every instance is the
-    // prototype, as in the paper's OR.
-    const auto problem = scenarios::createPandaCage(4);
-    ORPARC orparc(problem.getSpaceInformation());
+    // A portfolio: on mobile robots the odd instances get a quarter of the sample cap and twice the window growth,
+    // the even ones the prototype's settings; with diversify off, every instance is the prototype, as in the paper's
+    // OR. The panda profile's schedule is eager already: its odd instances keep it (other seeds only).
+    const auto mobile = scenarios::createMobileCross(4);
+    ORPARC orparc(mobile.getSpaceInformation());
     EXPECT_TRUE(orparc.getDiversify());
-    orparc.setProblemDefinition(problem.createProblemDefinition());
+    orparc.setProblemDefinition(mobile.createProblemDefinition());
     const auto even = orparc.createInstance(0, 9), odd = orparc.createInstance(1, 9),
                third = orparc.createInstance(3, 9);
-    EXPECT_EQ(even->getSampleCap(), 12500u);
-    EXPECT_DOUBLE_EQ(even->getMinWindowGrowth(), 2.5);
+    EXPECT_EQ(even->getSampleCap(), 5000u);
+    EXPECT_DOUBLE_EQ(even->getMinWindowGrowth(), 1.);
     for (const auto &eager : {odd, third})
     {
-        EXPECT_EQ(eager->getSampleCap(), 3125u);
-        EXPECT_DOUBLE_EQ(eager->getMinWindowGrowth(), 4.);
+        EXPECT_EQ(eager->getSampleCap(), 1250u);
+        EXPECT_DOUBLE_EQ(eager->getMinWindowGrowth(), 2.);
         EXPECT_EQ(eager->getWindow(), even->getWindow());  // the rest is the prototype's
     }
     ASSERT_TRUE(orparc.params().setParam("diversify", "0"));
-    EXPECT_EQ(orparc.createInstance(1, 9)->getSampleCap(), 12500u);
+    EXPECT_EQ(orparc.createInstance(1, 9)->getSampleCap(), 5000u);
+
+    const auto cage = scenarios::createPandaCage(4);
+    ORPARC arms(cage.getSpaceInformation());
+    arms.setProblemDefinition(cage.createProblemDefinition());
+    for (const unsigned int k : {0u, 1u})
+    {
+        EXPECT_EQ(arms.createInstance(k, 9)->getSampleCap(), 12500u) << k;
+        EXPECT_DOUBLE_EQ(arms.createInstance(k, 9)->getMinWindowGrowth(), 2.5) << k;
+    }
     // The eager schedule's limits: no cap stays none, the growth stops at the parameter's top.
     ArcSettings settings;
     settings.sampleCap = 0;
-    settings.minWindowGrowth = 3.;
+    settings.minWindowGrowth = 2.;
     EXPECT_EQ(settings.eager().sampleCap, 0u);
     EXPECT_DOUBLE_EQ(settings.eager().minWindowGrowth, 4.);
     settings.sampleCap = 2000;

@@ -52,6 +52,8 @@ std::string ompl_parc::ArcSettings::profileFor(const MultiRobotSpaceInformation 
 ompl_parc::ArcSettings ompl_parc::ArcSettings::eager() const
 {
     ArcSettings s = *this;
+    if (s.minWindowGrowth >= EAGER_GROWTH)
+        return s;
     if (s.sampleCap != 0)
         s.sampleCap = std::max(1000u, s.sampleCap / 4);
     s.minWindowGrowth = std::min(4., 2. * std::max(1., s.minWindowGrowth));

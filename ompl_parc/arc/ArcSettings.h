@@ -68,9 +68,14 @@ namespace ompl_parc
         /** \brief These settings with an eager repair schedule: a quarter of the sample cap (at least 1000; none stays
             none) and twice the minimum window growth (at most 4), so fewer samples on each window and fewer windows
             before the team's global problem. For the odd instances of an OR race (ORPARC's \e diversify): on a team
-            of arms that no window can repair (Panda Cage 16 task 3), the default schedule spends seconds on
-            hopeless windows and an eager instance wins; where windows do repair, the default instance does. */
+            of arms that no window can repair, a patient schedule spends seconds on hopeless windows and an eager
+            instance wins; where windows do repair, the patient instance does. A schedule eager already (a minimum
+            window growth of EAGER_GROWTH or more: the panda profile) is returned as it is: more eager still, the odd
+            instances lost Panda Cage 16 task 4's race (docs/results-arm-tail.md). */
         ArcSettings eager() const;
+
+        /** \brief The least minimum window growth of a schedule that is eager already (the panda profile's). */
+        static constexpr double EAGER_GROWTH = 2.5;
 
         /** \brief Half-width of the window for attempt \e k (0 = the first). */
         std::size_t halfWidth(unsigned int k) const;
