@@ -90,3 +90,14 @@ TEST(MoveScheduler, LeavesMovesThatCannotOverlapAsTheyAre)
     EXPECT_EQ(path.getStateCount(), 3u);
     EXPECT_EQ(scheduler.getDuration(), 640u + 1280u);
 }
+
+TEST(MoveScheduler, LeavesMovesTooLongToKeepTheirBodiesAsTheyAre)
+{
+    // The parallel lanes of the first test at 20 000 timesteps per unit: 640 000 bodies, more than MAX_BODIES.
+    const auto problem = test::twoDiscs({-8., 5.}, {8., 5.}, {-8., -5.}, {8., -5.}, false, 20000.);
+    MoveScheduler scheduler(problem.getSpaceInformation());
+    og::PathGeometric path(problem.getSpaceInformation());
+    EXPECT_FALSE(scheduleMoves(problem, 0, scheduler, path));
+    EXPECT_EQ(path.getStateCount(), 3u);
+    EXPECT_GT(scheduler.getDuration(), MoveScheduler::MAX_BODIES);
+}

@@ -53,7 +53,8 @@ bool ompl_parc::MoveScheduler::apart(const Timeline &a, const Timeline &b)
     return true;
 }
 
-bool ompl_parc::MoveScheduler::schedule(const std::vector<Move> &moves, const ob::State *start, og::PathGeometric &path)
+bool ompl_parc::MoveScheduler::schedule(const std::vector<Move> &moves, const ob::State *start, og::PathGeometric &path,
+                                        const ob::PlannerTerminationCondition &ptc)
 {
     const double resolution = team_->getResolution();
     std::vector<Timeline> lines(moves.size());
@@ -72,6 +73,16 @@ bool ompl_parc::MoveScheduler::schedule(const std::vector<Move> &moves, const ob
                 MultiRobotPlan::stepsFor(robot.distance(states[s - 1].data(), states[s].data()), resolution));
             line.turns.push_back(line.path.getArrival());
         }
+        sequential += line.path.getArrival();
+    }
+    duration_ = sequential;
+    if (sequential + moves.size() > MAX_BODIES)
+        return false;  // the bodies of every timestep would not be worth their memory
+    for (Timeline &line : lines)
+    {
+        if (ptc)
+            return false;
+        const Robot &robot = *team_->getRobot(line.robot);
         line.bodies.resize(line.path.getArrival() + 1);
         std::vector<double> q(robot.getDimension());
         for (std::size_t t = 0; t < line.bodies.size(); ++t)
@@ -79,13 +90,13 @@ bool ompl_parc::MoveScheduler::schedule(const std::vector<Move> &moves, const ob
             line.path.getConfig(t, q.data());
             robot.computeBody(q.data(), line.bodies[t]);
         }
-        sequential += line.duration();
     }
-    duration_ = sequential;
 
     std::size_t end = 0;  // the last end of the moves placed
     for (std::size_t k = 0; k < lines.size(); ++k)
     {
+        if (ptc)
+            return false;
         std::vector<std::size_t> candidates{0, end};
         const std::size_t step = std::max<std::size_t>(1, end / 16);
         for (std::size_t c = step; c < end; c += step)
@@ -134,7 +145,7 @@ bool ompl_parc::MoveScheduler::schedule(const std::vector<Move> &moves, const ob
         overlapped.append(at.get());
     }
     for (std::size_t s = 1; s < overlapped.getStateCount(); ++s)
-        if (!team_->checkMotion(overlapped.getState(s - 1), overlapped.getState(s)))
+        if (ptc || !team_->checkMotion(overlapped.getState(s - 1), overlapped.getState(s)))
             return false;
     path = overlapped;
     duration_ = end;

@@ -366,7 +366,7 @@ bool ompl_parc::SequentialRRTConnectSolver::resume(const MultiRobotSpaceInformat
             path.append(at.get());
         }
     // The moves overlapped in time where the robots stay apart (the path above where they cannot).
-    MoveScheduler(local).schedule(moves, start.get(), path);
+    MoveScheduler(local).schedule(moves, start.get(), path, ptc);
     team_patch::lay(local, path, seed, simplify_, patch);
     return true;
 }

@@ -3,6 +3,7 @@
 
 #include "ompl_parc/model/MultiRobotSpaceInformation.h"
 
+#include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/geometric/PathGeometric.h>
 
 #include <cstddef>
@@ -38,12 +39,18 @@ namespace ompl_parc
 
         /** \brief \e moves (in the order planned, every team robot once, the team standing at \e start before them)
             overlapped as the class describes, into \e path (a path of the team's space, replaced); false, with
-            \e path untouched, where they cannot start earlier or the team's motion validator refuses the result. */
-        bool schedule(const std::vector<Move> &moves, const ompl::base::State *start,
-                      ompl::geometric::PathGeometric &path);
+            \e path untouched, where they cannot start earlier, where the team's motion validator refuses the result,
+            or once \e ptc fires. */
+        bool schedule(
+            const std::vector<Move> &moves, const ompl::base::State *start, ompl::geometric::PathGeometric &path,
+            const ompl::base::PlannerTerminationCondition &ptc = ompl::base::plannerNonTerminatingCondition());
 
         /** \brief Timesteps the last schedule() lasts: as long as all moves one after another where it failed. */
         std::size_t getDuration() const { return duration_; }
+
+        /** \brief The most robot bodies (one per timestep of each move) a schedule keeps; moves that last longer
+            together are left one after another. */
+        static constexpr std::size_t MAX_BODIES = std::size_t(1) << 18;
 
       private:
         /** \brief A placed move: its robot's configurations and bodies at each of its timesteps. */
