@@ -231,8 +231,8 @@ namespace
 
         /** The team's robots in the order they move, each with its move's path (owned by the search); empty once ptc
             or the sample cap stopped the search. */
-        std::vector<std::pair<std::size_t, const std::vector<Config> *>> run(const ompl_parc::Subproblem &subproblem,
-                                                                             const ob::PlannerTerminationCondition &ptc)
+        std::vector<ompl_parc::MoveScheduler::Move> run(const ompl_parc::Subproblem &subproblem,
+                                                        const ob::PlannerTerminationCondition &ptc)
         {
             subproblem_ = &subproblem;
             ptc_ = subproblem.cappedTermination(ptc);
@@ -313,7 +313,7 @@ namespace
         std::vector<std::size_t> order_;
         std::map<std::pair<std::uint32_t, std::size_t>, std::unique_ptr<Move>> movesByKey_;
         std::unordered_set<std::uint32_t> dead_;
-        std::vector<std::pair<std::size_t, const std::vector<Config> *>> moves_;
+        std::vector<ompl_parc::MoveScheduler::Move> moves_;
     };
 }  // namespace
 
